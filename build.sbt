@@ -1,0 +1,34 @@
+ThisBuild / scalaVersion := "3.3.6"
+ThisBuild / organization := "io.github.sims-scala"
+ThisBuild / version := "0.1.0-SNAPSHOT"
+ThisBuild / scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked")
+
+val scalaTestVersion = "3.2.19"
+
+lazy val testDependencies = Seq(
+  "org.scalatest" %% "scalatest" % scalaTestVersion % Test,
+  "org.scalatestplus" %% "scalacheck-1-18" % "3.2.19.0" % Test,
+  "org.scalacheck" %% "scalacheck" % "1.18.1" % Test
+)
+
+/** The library: only the Scala standard library at run time. */
+lazy val root = (project in file("."))
+  .settings(
+    name := "sims",
+    description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
+    licenses := List(License.MIT),
+    libraryDependencies ++= testDependencies,
+    Test / parallelExecution := false
+  )
+
+/** Example scenes, headless runs and the viewer. */
+lazy val examples = (project in file("examples"))
+  .dependsOn(root)
+  .settings(
+    name := "sims-examples",
+    publish / skip := true,
+    libraryDependencies ++= testDependencies,
+    run / fork := true,
+    run / connectInput := true,
+    Test / fork := true
+  )

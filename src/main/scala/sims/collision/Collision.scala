@@ -1,0 +1,125 @@
+package sims.collision
+
+import sims.dynamics.{Constraint, Shape}
+import sims.geometry.Vector2D
+
+/** A collision between two shapes: a constraint that keeps them from moving into each other
+  * (documentation chapter 5). `shape1` is the reference shape, `shape2` the incident one; the
+  * contact points lie on the reference shape's outline and the unit `normal` points away from
+  * it. Velocity and position correction are implemented here, once, from those four fields.
+  *
+  * Derivation, per contact point p with r1 = p - pos1, r2 = p - pos2, n the normal:
+  *   Cdot = n . (v2 + w2 x r2 - v1 - w1 x r1) (1 + e)  >= 0, corrected only when negative
+  *   J M^-1 J^T = 1/m1 + (r1 x n)^2 / I1 + 1/m2 + (r2 x n)^2 / I2   (its inverse: m)
+  *   lambda = -m Cdot: impulse n lambda on body 2, -n lambda on body 1
+  *   friction along t = n.leftNormal: lambdaT = -mT (relative velocity . t), clamped to
+  *   [-mu |lambda|, mu |lambda|]
+  *   position: C = 0.01 - overlap along n, corrected only when C <= 0: P = -n m C
+  * with e and mu the products of the shapes' restitutions and frictions.
+  */
+abstract class Collision extends Constraint:
+  /** The reference shape. */
+  val shape1: Shape
+
+  /** The incident shape. */
+  val shape2: Shape
+
+  /** Contact points, world coordinates. */
+  def points: Iterable[Vector2D]
+
+  /** Unit contact normal, pointing away from `shape1`. */
+  def normal: Vector2D
+
+  // Hot-loop access; the built-in kinds override these with their own fields.
+  private lazy val pointArray: Array[Vector2D] = points.toArray
+  private lazy val normalVector: Vector2D = normal
+  private[sims] def pointCount: Int = pointArray.length
+  private[sims] def pointX(i: Int): Double = pointArray(i).x
+  private[sims] def pointY(i: Int): Double = pointArray(i).y
+  private[sims] def normalX: Double = normalVector.x
+  private[sims] def normalY: Double = normalVector.y
+
+  def correctVelocity(h: Double): Unit =
+    val b1 = shape1.body
+    val b2 = shape2.body
+    val nx = normalX
+    val ny = normalY
+    val e = shape1.restitution * shape2.restitution
+    val mu = shape1.friction * shape2.friction
+    var i = 0
+    while i < pointCount do
+      val px = pointX(i)
+      val py = pointY(i)
+      val r1x = px - b1.x; val r1y = py - b1.y
+      val r2x = px - b2.x; val r2y = py - b2.y
+      // Normal part: an inequality constraint, corrected only when the points approach.
+      val vn = Collision.relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+      val cDot = vn * (1 + e)
+      var lambda = 0.0
+      if cDot <= 0 then
+        val m = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+        lambda = -m * cDot
+        b1.impulseAt(-nx * lambda, -ny * lambda, r1x, r1y)
+        b2.impulseAt(nx * lambda, ny * lambda, r2x, r2y)
+      // Friction along the tangent, bounded by mu times this correction's normal impulse.
+      val tx = -ny
+      val ty = nx
+      val vt = Collision.relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
+      val mT = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
+      val bound = mu * math.abs(lambda)
+      val lambdaT = math.max(-bound, math.min(bound, -mT * vt))
+      b1.impulseAt(-tx * lambdaT, -ty * lambdaT, r1x, r1y)
+      b2.impulseAt(tx * lambdaT, ty * lambdaT, r2x, r2y)
+      i += 1
+
+  def correctPosition(h: Double): Unit =
+    val b1 = shape1.body
+    val b2 = shape2.body
+    val nx = normalX
+    val ny = normalY
+    var i = 0
+    while i < pointCount do
+      val px = pointX(i)
+      val py = pointY(i)
+      val overlap = Collision.overlapAlong(shape1, shape2, nx, ny)
+      val c = Collision.ToleratedOverlap - overlap
+      if c <= 0 then
+        val r1x = px - b1.x; val r1y = py - b1.y
+        val r2x = px - b2.x; val r2y = py - b2.y
+        val m = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+        val impulseX = -nx * m * c
+        val impulseY = -ny * m * c
+        b1.displace(-impulseX * b1.invMass, -impulseY * b1.invMass, -(r1x * impulseY - r1y * impulseX) * b1.invI)
+        b2.displace(impulseX * b2.invMass, impulseY * b2.invMass, (r2x * impulseY - r2y * impulseX) * b2.invI)
+      i += 1
+
+  override def toString: String =
+    s"${getClass.getSimpleName}(normal = $normal, points = ${points.mkString(", ")})"
+
+/** Constants and helpers of the contact constraint. */
+object Collision:
+  /** Overlap tolerated by position correction, m: deeper overlap is corrected. */
+  val ToleratedOverlap: Double = 0.01
+
+  /** (v2(p) - v1(p)) . (dx, dy) for the point at arms r1, r2. */
+  private inline def relativeVelocity(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
+      r1x: Double, r1y: Double, r2x: Double, r2y: Double, dx: Double, dy: Double): Double =
+    val vx = (b2.vx - b2.w * r2y) - (b1.vx - b1.w * r1y)
+    val vy = (b2.vy + b2.w * r2x) - (b1.vy + b1.w * r1x)
+    vx * dx + vy * dy
+
+  /** 1 / (1/m1 + (r1 x d)^2/I1 + 1/m2 + (r2 x d)^2/I2), 0 when both bodies are fixed. */
+  private inline def effectiveMass(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
+      r1x: Double, r1y: Double, r2x: Double, r2y: Double, dx: Double, dy: Double): Double =
+    val cr1 = r1x * dy - r1y * dx
+    val cr2 = r2x * dy - r2y * dx
+    val invMass = b1.invMass + cr1 * cr1 * b1.invI + b2.invMass + cr2 * cr2 * b2.invI
+    if invMass == 0.0 then 0.0 else 1 / invMass
+
+  /** Overlap of the two shapes' projections onto the unit axis (nx, ny). */
+  private[sims] def overlapAlong(s1: Shape, s2: Shape, nx: Double, ny: Double): Double =
+    val lower1 = s1.projectMin(nx, ny)
+    val upper1 = s1.projectMax(nx, ny)
+    val lower2 = s2.projectMin(nx, ny)
+    val upper2 = s2.projectMax(nx, ny)
+    sims.geometry.Projection.overlap(lower1, upper1, lower2, upper2)

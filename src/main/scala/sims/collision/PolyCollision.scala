@@ -1,0 +1,122 @@
+package sims.collision
+
+import scala.collection.immutable.ArraySeq
+import sims.dynamics.Shape
+import sims.geometry.{ConvexPolygon, Vector2D}
+
+/** Collision of two convex polygons, found with the separating axis theorem. For the pair
+  * (first, second) the side normals of the second, then of the first, are tried; the one with
+  * the smallest positive overlap of the projections (the first found on ties) gives the normal,
+  * and its polygon is the reference. Points: the incident polygon's vertices inside the
+  * reference, then the reference's vertices inside the incident polygon.
+  */
+final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon) extends Collision:
+  private val axis = PolyCollision.referenceAxis(first, second)
+  private val secondIsReference = axis < second.vertexCount
+
+  val shape1: Shape & ConvexPolygon = if secondIsReference then second else first
+  val shape2: Shape & ConvexPolygon = if secondIsReference then first else second
+
+  override private[sims] val normalX: Double = PolyCollision.sideNormalX(shape1, PolyCollision.sideOf(axis, second))
+  override private[sims] val normalY: Double = PolyCollision.sideNormalY(shape1, PolyCollision.sideOf(axis, second))
+
+  private val (xs, ys) =
+    val bx = Array.newBuilder[Double]
+    val by = Array.newBuilder[Double]
+    def collect(from: ConvexPolygon, inside: ConvexPolygon): Unit =
+      var i = 0
+      while i < from.vertexCount do
+        if PolyCollision.contains(inside, from.vertexX(i), from.vertexY(i)) then
+          bx += from.vertexX(i)
+          by += from.vertexY(i)
+        i += 1
+    collect(shape2, shape1)
+    collect(shape1, shape2)
+    (bx.result(), by.result())
+
+  def normal: Vector2D = Vector2D(normalX, normalY)
+  def points: Iterable[Vector2D] = ArraySeq.tabulate(xs.length)(i => Vector2D(xs(i), ys(i)))
+  override private[sims] def pointCount: Int = xs.length
+  override private[sims] def pointX(i: Int): Double = xs(i)
+  override private[sims] def pointY(i: Int): Double = ys(i)
+
+/** The polygon-polygon narrowphase (separating axis theorem). */
+object PolyCollision:
+  /** True when the projections of the polygons overlap (or touch) on every side normal of both. */
+  def colliding(p1: ConvexPolygon, p2: ConvexPolygon): Boolean =
+    allOverlap(p1, p2, p2) && allOverlap(p1, p2, p1)
+
+  private def allOverlap(p1: ConvexPolygon, p2: ConvexPolygon, sidesOf: ConvexPolygon): Boolean =
+    var i = 0
+    var separated = false
+    while !separated && i < sidesOf.vertexCount do
+      val nx = sideNormalX(sidesOf, i)
+      val ny = sideNormalY(sidesOf, i)
+      if projectMax(p1, nx, ny) < projectMin(p2, nx, ny) || projectMax(p2, nx, ny) < projectMin(p1, nx, ny) then
+        separated = true
+      i += 1
+    !separated
+
+  /** Index of the reference axis: `k < second.vertexCount` is side k of the second polygon,
+    * otherwise side `k - second.vertexCount` of the first.
+    */
+  private def referenceAxis(first: ConvexPolygon, second: ConvexPolygon): Int =
+    val total = second.vertexCount + first.vertexCount
+    var best = -1
+    var bestOverlap = Double.PositiveInfinity
+    var k = 0
+    while k < total do
+      val owner = if k < second.vertexCount then second else first
+      val side = sideOf(k, second)
+      val nx = sideNormalX(owner, side)
+      val ny = sideNormalY(owner, side)
+      val overlap = sims.geometry.Projection.overlap(
+        projectMin(first, nx, ny), projectMax(first, nx, ny), projectMin(second, nx, ny), projectMax(second, nx, ny))
+      if overlap > 0 && overlap < bestOverlap then
+        best = k
+        bestOverlap = overlap
+      k += 1
+    if best < 0 then 0 else best // no positive overlap (the polygons only touch): first axis
+
+  private def sideOf(k: Int, second: ConvexPolygon): Int =
+    if k < second.vertexCount then k else k - second.vertexCount
+
+  private[collision] def sideNormalX(p: ConvexPolygon, i: Int): Double =
+    val j = if i + 1 == p.vertexCount then 0 else i + 1
+    val dx = p.vertexX(j) - p.vertexX(i)
+    val dy = p.vertexY(j) - p.vertexY(i)
+    dy / math.sqrt(dx * dx + dy * dy)
+
+  private[collision] def sideNormalY(p: ConvexPolygon, i: Int): Double =
+    val j = if i + 1 == p.vertexCount then 0 else i + 1
+    val dx = p.vertexX(j) - p.vertexX(i)
+    val dy = p.vertexY(j) - p.vertexY(i)
+    -dx / math.sqrt(dx * dx + dy * dy)
+
+  private def projectMin(p: ConvexPolygon, ax: Double, ay: Double): Double =
+    var lower = Double.PositiveInfinity
+    var i = 0
+    while i < p.vertexCount do
+      val d = p.vertexX(i) * ax + p.vertexY(i) * ay
+      if d < lower then lower = d
+      i += 1
+    lower
+
+  private def projectMax(p: ConvexPolygon, ax: Double, ay: Double): Double =
+    var upper = Double.NegativeInfinity
+    var i = 0
+    while i < p.vertexCount do
+      val d = p.vertexX(i) * ax + p.vertexY(i) * ay
+      if d > upper then upper = d
+      i += 1
+    upper
+
+  private[collision] def contains(p: ConvexPolygon, x: Double, y: Double): Boolean =
+    var inside = true
+    var i = 0
+    while inside && i < p.vertexCount do
+      val j = if i + 1 == p.vertexCount then 0 else i + 1
+      val cross = (p.vertexX(j) - p.vertexX(i)) * (y - p.vertexY(i)) - (p.vertexY(j) - p.vertexY(i)) * (x - p.vertexX(i))
+      if cross < 0 then inside = false
+      i += 1
+    inside

@@ -1,0 +1,198 @@
+package sims.dynamics
+
+import scala.collection.immutable.ArraySeq
+import sims.geometry.Vector2D
+
+/** A rigid body made of one or more shapes (documentation chapter 2).
+  *
+  * The body's position is its centre of mass. Mass, centre of mass and moment of inertia are
+  * computed once from the shapes (and again only if a shape is moved before the body joins a
+  * world), not summed on every access. A body starts with rotation 0 whatever its shapes'
+  * rotations; each shape keeps its offset from the centre and its rotation relative to the body.
+  */
+final class Body(initialShapes: Shape*):
+  /** The shapes of this body, in the order given. */
+  val shapes: IndexedSeq[Shape] = ArraySeq.from(initialShapes)
+
+  if shapes.isEmpty then throw IllegalArgumentException("a Body needs at least one shape")
+  for (s, i) <- shapes.zipWithIndex do
+    if s == null then throw IllegalArgumentException(s"shape $i of a Body is null")
+    if s.body != null then throw IllegalArgumentException(s"shape $s already belongs to a body")
+    if shapes.indexWhere(_ eq s) != i then throw IllegalArgumentException(s"shape $s is given twice")
+  shapes.foreach(_._body = this)
+
+  // State as plain doubles: the solver reads and writes these without allocating.
+  private[sims] var x, y: Double = 0 // centre of mass
+  private[sims] var angle: Double = 0
+  private[sims] var vx, vy, w: Double = 0
+  private[sims] var fx, fy, tau: Double = 0
+  /** 1 / mass, 0 when fixed. */
+  private[sims] var invMass: Double = 0
+  /** 1 / I, 0 when fixed. */
+  private[sims] var invI: Double = 0
+
+  private var freeMass, freeI: Double = 0
+  private var _fixed = false
+  private val offsetX, offsetY, relativeAngle = new Array[Double](shapes.length)
+  // True when every shape sits on the centre of mass: moving needs no trigonometry then.
+  private var allCentred = true
+
+  /** The world this body is in, or null. */
+  private[sims] var world: World = null
+
+  shapesChanged()
+
+  /** Recomputes mass, centre of mass, inertia and the shapes' offsets from their positions. */
+  private[sims] def shapesChanged(): Unit =
+    var m, sx, sy = 0.0
+    for s <- shapes do
+      m += s.mass
+      sx += s.x * s.mass
+      sy += s.y * s.mass
+    x = sx / m
+    y = sy / m
+    var inertia = 0.0
+    val c = math.cos(-angle)
+    val sn = math.sin(-angle)
+    allCentred = true
+    for (s, i) <- shapes.zipWithIndex do
+      val dx = s.x - x
+      val dy = s.y - y
+      inertia += s.I + s.mass * (dx * dx + dy * dy)
+      offsetX(i) = dx * c - dy * sn
+      offsetY(i) = dx * sn + dy * c
+      relativeAngle(i) = s.angle - angle
+      if dx != 0 || dy != 0 then allCentred = false
+    freeMass = m
+    freeI = inertia
+    updateInverseMass()
+
+  private def updateInverseMass(): Unit =
+    invMass = if _fixed then 0 else 1 / freeMass
+    invI = if _fixed then 0 else 1 / freeI
+
+  /** Places every shape from the body's centre and rotation. */
+  private[sims] def placeShapes(): Unit =
+    if allCentred then
+      var i = 0
+      while i < shapes.length do
+        shapes(i).place(x, y, angle + relativeAngle(i))
+        i += 1
+    else
+      val c = math.cos(angle)
+      val s = math.sin(angle)
+      var i = 0
+      while i < shapes.length do
+        shapes(i).place(x + offsetX(i) * c - offsetY(i) * s, y + offsetX(i) * s + offsetY(i) * c,
+          angle + relativeAngle(i))
+        i += 1
+
+  /** Moves and rotates the body by the given amounts (solver use: no checks, no allocation). */
+  private[sims] def displace(dx: Double, dy: Double, dAngle: Double): Unit =
+    if dx != 0 || dy != 0 || dAngle != 0 then
+      x += dx
+      y += dy
+      angle += dAngle
+      placeShapes()
+
+  /** Adds the impulse (px, py) acting at offset (rx, ry) from the centre (solver use). */
+  private[sims] def impulseAt(px: Double, py: Double, rx: Double, ry: Double): Unit =
+    vx += px * invMass
+    vy += py * invMass
+    w += (rx * py - ry * px) * invI
+
+  /** Resulting force on the centre of mass, N. */
+  def force: Vector2D = Vector2D(fx, fy)
+
+  /** Sets the resulting force; must be finite. */
+  def force_=(f: Vector2D): Unit =
+    Vector2D.requireFinite("force", f)
+    fx = f.x; fy = f.y
+
+  /** Resulting torque about the centre of mass, N m. */
+  def torque: Double = tau
+
+  /** Sets the resulting torque; must be finite. */
+  def torque_=(t: Double): Unit = tau = Vector2D.requireFinite("torque", t)
+
+  /** Velocity of the centre of mass, m/s. */
+  def linearVelocity: Vector2D = Vector2D(vx, vy)
+
+  /** Sets the linear velocity; must be finite. */
+  def linearVelocity_=(v: Vector2D): Unit =
+    Vector2D.requireFinite("linearVelocity", v)
+    vx = v.x; vy = v.y
+
+  /** Angular velocity, rad/s, counter-clockwise. */
+  def angularVelocity: Double = w
+
+  /** Sets the angular velocity; must be finite. */
+  def angularVelocity_=(value: Double): Unit = w = Vector2D.requireFinite("angularVelocity", value)
+
+  /** Position of the centre of mass, world coordinates. */
+  def pos: Vector2D = Vector2D(x, y)
+
+  /** Moves the body (and all its shapes) so that its centre of mass is at `newPos`. */
+  def pos_=(newPos: Vector2D): Unit =
+    Vector2D.requireFinite("pos", newPos)
+    x = newPos.x; y = newPos.y
+    placeShapes()
+
+  /** Rotation in radians, counter-clockwise; 0 when the body was made. */
+  def rotation: Double = angle
+
+  /** Rotates the body (and its shapes) about its centre of mass to `newRotation`. */
+  def rotation_=(newRotation: Double): Unit =
+    angle = Vector2D.requireFinite("rotation", newRotation)
+    placeShapes()
+
+  /** Mass in kg: the shapes' sum, or positive infinity when fixed. */
+  def mass: Double = if _fixed then Double.PositiveInfinity else freeMass
+
+  /** Moment of inertia about the centre of mass (parallel-axis sum), or infinity when fixed. */
+  def I: Double = if _fixed then Double.PositiveInfinity else freeI
+
+  /** Whether the body is fixed (immovable by forces and impulses). */
+  def fixed: Boolean = _fixed
+
+  /** Fixes or frees the body; fixing it also sets both velocities to 0. */
+  def fixed_=(value: Boolean): Unit =
+    _fixed = value
+    if value then
+      vx = 0; vy = 0; w = 0
+    updateInverseMass()
+
+  /** Adds `f` to the force on the centre of mass; nothing happens when the body is fixed. */
+  def applyForce(f: Vector2D): Unit =
+    Vector2D.requireFinite("force", f)
+    if !_fixed then
+      fx += f.x; fy += f.y
+
+  /** Applies `f` at `point` (world coordinates): changes force and torque. */
+  def applyForce(f: Vector2D, point: Vector2D): Unit =
+    Vector2D.requireFinite("force", f)
+    Vector2D.requireFinite("point", point)
+    if !_fixed then
+      fx += f.x; fy += f.y
+      tau += (point.x - x) * f.y - (point.y - y) * f.x
+
+  /** Applies the impulse `p` at the centre of mass: changes the linear velocity. */
+  def applyImpulse(p: Vector2D): Unit =
+    Vector2D.requireFinite("impulse", p)
+    vx += p.x * invMass
+    vy += p.y * invMass
+
+  /** Applies the impulse `p` at `point` (world coordinates): changes both velocities. */
+  def applyImpulse(p: Vector2D, point: Vector2D): Unit =
+    Vector2D.requireFinite("impulse", p)
+    Vector2D.requireFinite("point", point)
+    impulseAt(p.x, p.y, point.x - x, point.y - y)
+
+  /** Velocity of the body's point at `point` (world coordinates): `v + w x r`. */
+  def velocityOfPoint(point: Vector2D): Vector2D =
+    Vector2D(vx - w * (point.y - y), vy + w * (point.x - x))
+
+  /** True if `point` lies in one of the body's shapes. */
+  def contains(point: Vector2D): Boolean = shapes.exists(_.contains(point))
+
+  override def toString: String = s"Body(pos = $pos, shapes = ${shapes.mkString(", ")})"

@@ -1,0 +1,99 @@
+package sims.dynamics
+
+import scala.collection.immutable.ArraySeq
+import sims.geometry.{AABB, ConvexPolygon, Projection, Vector2D}
+
+/** A convex polygonal shape defined by its vertices around its centre at rotation 0
+  * (counter-clockwise). World vertices are recomputed lazily after the shape moves, into
+  * arrays reused for the shape's whole life.
+  */
+abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with ConvexPolygon:
+  private val count = localVertices.length
+  private val localX = localVertices.map(_.x).toArray
+  private val localY = localVertices.map(_.y).toArray
+  private val worldX = new Array[Double](count)
+  private val worldY = new Array[Double](count)
+  private var boxMinX, boxMinY, boxMaxX, boxMaxY = 0.0
+  private var current = false
+
+  override protected def moved(): Unit = current = false
+
+  /** Recomputes world vertices and bounds if the shape moved since the last call. */
+  private def refresh(): Unit =
+    if !current then
+      val c = math.cos(angle)
+      val s = math.sin(angle)
+      boxMinX = Double.PositiveInfinity; boxMinY = Double.PositiveInfinity
+      boxMaxX = Double.NegativeInfinity; boxMaxY = Double.NegativeInfinity
+      var i = 0
+      while i < count do
+        val vx = x + localX(i) * c - localY(i) * s
+        val vy = y + localX(i) * s + localY(i) * c
+        worldX(i) = vx
+        worldY(i) = vy
+        if vx < boxMinX then boxMinX = vx
+        if vx > boxMaxX then boxMaxX = vx
+        if vy < boxMinY then boxMinY = vy
+        if vy > boxMaxY then boxMaxY = vy
+        i += 1
+      current = true
+
+  def vertices: IndexedSeq[Vector2D] =
+    refresh()
+    ArraySeq.tabulate(count)(i => Vector2D(worldX(i), worldY(i)))
+
+  override private[sims] def vertexCount: Int = count
+  override private[sims] def vertexX(i: Int): Double = { refresh(); worldX(i) }
+  override private[sims] def vertexY(i: Int): Double = { refresh(); worldY(i) }
+
+  override def project(axis: Vector2D): Projection =
+    refresh()
+    var lower = Double.PositiveInfinity
+    var upper = Double.NegativeInfinity
+    var i = 0
+    while i < count do
+      val p = worldX(i) * axis.x + worldY(i) * axis.y
+      if p < lower then lower = p
+      if p > upper then upper = p
+      i += 1
+    Projection(axis, lower, upper)
+
+  override def AABB: AABB =
+    refresh()
+    new sims.geometry.AABB(Vector2D(boxMinX, boxMinY), Vector2D(boxMaxX, boxMaxY))
+
+  override def contains(point: Vector2D): Boolean =
+    refresh()
+    var inside = true
+    var i = 0
+    while inside && i < count do
+      val j = if i + 1 == count then 0 else i + 1
+      val cross = (worldX(j) - worldX(i)) * (point.y - worldY(i)) - (worldY(j) - worldY(i)) * (point.x - worldX(i))
+      if cross < 0 then inside = false
+      i += 1
+    inside
+
+  override private[sims] def projectMin(ax: Double, ay: Double): Double =
+    refresh()
+    var lower = Double.PositiveInfinity
+    var i = 0
+    while i < count do
+      val p = worldX(i) * ax + worldY(i) * ay
+      if p < lower then lower = p
+      i += 1
+    lower
+
+  override private[sims] def projectMax(ax: Double, ay: Double): Double =
+    refresh()
+    var upper = Double.NegativeInfinity
+    var i = 0
+    while i < count do
+      val p = worldX(i) * ax + worldY(i) * ay
+      if p > upper then upper = p
+      i += 1
+    upper
+
+  override private[sims] def minX: Double = { refresh(); boxMinX }
+  override private[sims] def minY: Double = { refresh(); boxMinY }
+  override private[sims] def maxX: Double = { refresh(); boxMaxX }
+  override private[sims] def maxY: Double = { refresh(); boxMaxY }

@@ -1,0 +1,144 @@
+package sims.dynamics
+
+import sims.geometry.{AABB, Projection, Vector2D}
+
+/** A rigid two-dimensional form with a material (density, restitution, friction). Bodies are
+  * made of shapes; a shape belongs to at most one body. Subclasses give the geometry:
+  * `volume` (the area), `I` (moment of inertia about the shape's own centre), `AABB`,
+  * `project` and `contains`.
+  */
+abstract class Shape:
+
+  /** Density in kg/m^2; positive and finite. */
+  val density: Double
+
+  /** Area in m^2 (called volume as in "mass = volume * density"). */
+  def volume: Double
+
+  /** Moment of inertia about the shape's own centre, in kg m^2. */
+  def I: Double
+
+  /** Mass: volume times density. */
+  def mass: Double = volume * density
+
+  // World frame placement; kept as plain doubles so the solver moves shapes without allocating.
+  private[sims] var x: Double = 0
+  private[sims] var y: Double = 0
+  private[sims] var angle: Double = 0
+
+  /** Position of the shape's centre, world coordinates. */
+  def pos: Vector2D = Vector2D(x, y)
+
+  /** Moves the shape; if it belongs to a body, the body's centre of mass and inertia follow.
+    * Fails once the body is in a world (its shapes are then fixed).
+    */
+  def pos_=(newPos: Vector2D): Unit =
+    Vector2D.requireFinite("pos", newPos)
+    checkNotInWorld("pos")
+    place(newPos.x, newPos.y, angle)
+    if body != null then body.shapesChanged()
+
+  /** Rotation of the shape in radians, counter-clockwise, world frame. */
+  def rotation: Double = angle
+
+  /** Rotates the shape about its own centre; same rules as `pos_=`. */
+  def rotation_=(newRotation: Double): Unit =
+    Vector2D.requireFinite("rotation", newRotation)
+    checkNotInWorld("rotation")
+    place(x, y, newRotation)
+    if body != null then body.shapesChanged()
+
+  private var _restitution = Shape.DefaultRestitution
+
+  /** Coefficient of restitution; a collision uses the product of both shapes' values. */
+  def restitution: Double = _restitution
+
+  /** Sets the restitution; must be finite and at least 0. */
+  def restitution_=(value: Double): Unit =
+    Shape.requireNonNegative("restitution", value)
+    _restitution = value
+
+  private var _friction = Shape.DefaultFriction
+
+  /** Coefficient of friction; a collision uses the product of both shapes' values. */
+  def friction: Double = _friction
+
+  /** Sets the friction; must be finite and at least 0. */
+  def friction_=(value: Double): Unit =
+    Shape.requireNonNegative("friction", value)
+    _friction = value
+
+  /** Whether this shape takes part in collisions at all. */
+  var collidable: Boolean = true
+
+  /** Shapes this one never collides with (checked in both directions). */
+  var transientShapes: Set[Shape] = Set.empty
+
+  private[sims] var _body: Body = null
+
+  /** The body this shape belongs to, or null before it is part of one. */
+  def body: Body = _body
+
+  /** Order in which the shape joined a world (-1 outside any world); orders broadphase pairs. */
+  private[sims] var worldIndex: Int = -1
+
+  /** The smallest axis-aligned box around the shape. */
+  def AABB: AABB
+
+  /** The interval the shape covers on `axis`. */
+  def project(axis: Vector2D): Projection
+
+  /** True if `point` (world coordinates) lies inside or on the shape. */
+  def contains(point: Vector2D): Boolean
+
+  /** A new body made of this shape alone. */
+  def asBody: Body = Body(this)
+
+  /** Sets the world placement; subclasses drop their cached geometry. */
+  private[sims] def place(newX: Double, newY: Double, newAngle: Double): Unit =
+    x = newX
+    y = newY
+    angle = newAngle
+    moved()
+
+  /** Called after every change of placement; shapes with cached geometry invalidate it. */
+  protected def moved(): Unit = ()
+
+  /** Lowest projection of the shape on the unit axis (ax, ay) (allocation-free). */
+  private[sims] def projectMin(ax: Double, ay: Double): Double = project(Vector2D(ax, ay)).lower
+  /** Highest projection of the shape on the unit axis (ax, ay). */
+  private[sims] def projectMax(ax: Double, ay: Double): Double = project(Vector2D(ax, ay)).upper
+
+  /** Lower x bound of the AABB (allocation-free, for the broadphase). */
+  private[sims] def minX: Double = AABB.minVertex.x
+  /** Lower y bound of the AABB. */
+  private[sims] def minY: Double = AABB.minVertex.y
+  /** Upper x bound of the AABB. */
+  private[sims] def maxX: Double = AABB.maxVertex.x
+  /** Upper y bound of the AABB. */
+  private[sims] def maxY: Double = AABB.maxVertex.y
+
+  private def checkNotInWorld(what: String): Unit =
+    if body != null && body.world != null then
+      throw IllegalArgumentException(
+        s"cannot change the $what of a shape whose body is already in a world")
+
+/** Defaults and checks shared by all shapes. */
+object Shape:
+  /** Default coefficient of restitution of a new shape. */
+  val DefaultRestitution: Double = 0.7
+
+  /** Default coefficient of friction of a new shape. */
+  val DefaultFriction: Double = 0.707
+
+  /** Fails unless `value` is finite and strictly positive. */
+  private[sims] def requirePositive(name: String, value: Double): Double =
+    if !(value > 0) || value.isInfinite then
+      throw IllegalArgumentException(s"$name must be positive and finite, got $value")
+    value
+
+  /** Fails unless `value` is finite and at least 0. */
+  private[sims] def requireNonNegative(name: String, value: Double): Double =
+    if !(value >= 0) || value.isInfinite then
+      throw IllegalArgumentException(s"$name must be finite and at least 0, got $value")
+    value

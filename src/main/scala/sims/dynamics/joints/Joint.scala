@@ -1,0 +1,31 @@
+package sims.dynamics.joints
+
+import sims.dynamics.{Body, Constraint}
+import sims.geometry.Vector2D
+
+/** A constraint between two bodies, `node1` and `node2` (documentation 4.9). */
+abstract class Joint extends Constraint:
+  /** The first body. */
+  val node1: Body
+
+  /** The second body. */
+  val node2: Body
+
+  /** Fails unless the two bodies exist and differ; called by every joint's constructor. */
+  protected def checkNodes(): Unit =
+    if node1 == null then throw IllegalArgumentException("node1 must not be null")
+    if node2 == null then throw IllegalArgumentException("node2 must not be null")
+    if node1 eq node2 then throw IllegalArgumentException(s"a joint needs two different bodies, got $node1 twice")
+
+/** A point fixed on a body: stored relative to the body's centre and rotation at creation,
+  * it moves and turns with the body.
+  */
+private[joints] final class Anchor(body: Body, point: Vector2D):
+  private val offset = point - body.pos
+  private val rotationAtCreation = body.rotation
+
+  /** Current world position of the point. */
+  def position: Vector2D = body.pos + offset.rotate(body.rotation - rotationAtCreation)
+
+  /** Current offset from the body's centre of mass. */
+  def arm: Vector2D = offset.rotate(body.rotation - rotationAtCreation)

@@ -1,0 +1,69 @@
+package sims.dynamics.joints
+
+import sims.dynamics.Body
+import sims.geometry.Vector2D
+
+/** A spring between two anchor points, one on each body: a [[ForceJoint]] with Hooke's force
+  * `springConstant * (|x| - initialLength)` along x = connection2 - connection1, pulling the
+  * points together when stretched, plus a damping force `damping * (relative velocity projected
+  * on x)` against the relative motion. Both forces act equal and opposite on the two bodies at
+  * the connection points (the original applied the damping with the same sign to both; see the
+  * deviations). No velocity or position correction.
+  */
+final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anchor2: Vector2D,
+    val springConstant: Double, val initialLength: Double) extends Joint with ForceJoint:
+  checkNodes()
+  Vector2D.requireFinite("anchor1", anchor1)
+  Vector2D.requireFinite("anchor2", anchor2)
+  if !(springConstant >= 0) || springConstant.isInfinite then
+    throw IllegalArgumentException(s"springConstant must be finite and at least 0, got $springConstant")
+  if !(initialLength >= 0) || initialLength.isInfinite then
+    throw IllegalArgumentException(s"initialLength must be finite and at least 0, got $initialLength")
+
+  /** A spring between two anchors whose rest length is their distance at creation. */
+  def this(node1: Body, anchor1: Vector2D, node2: Body, anchor2: Vector2D, springConstant: Double) =
+    this(node1, anchor1, node2, anchor2, springConstant, (anchor2 - anchor1).length)
+
+  /** A spring between the two centres of mass, rest length their distance at creation. */
+  def this(node1: Body, node2: Body, springConstant: Double) =
+    this(node1, node1.pos, node2, node2.pos, springConstant)
+
+  private val a1 = Anchor(node1, anchor1)
+  private val a2 = Anchor(node2, anchor2)
+  private var _damping = 0.0
+
+  /** Damping coefficient in N s/m (default 0). */
+  def damping: Double = _damping
+
+  /** Sets the damping; must be finite and at least 0. */
+  def damping_=(value: Double): Unit =
+    if !(value >= 0) || value.isInfinite then
+      throw IllegalArgumentException(s"damping must be finite and at least 0, got $value")
+    _damping = value
+
+  /** Current world position of the anchor on node1. */
+  def connection1: Vector2D = a1.position
+
+  /** Current world position of the anchor on node2. */
+  def connection2: Vector2D = a2.position
+
+  /** Force on node1 (node2 gets its opposite): spring plus damping. */
+  def force: Vector2D =
+    val c1 = connection1
+    val c2 = connection2
+    val x = c2 - c1
+    val spring = if x.isNull then Vector2D.Null else x.unit * (springConstant * (x.length - initialLength))
+    val v = node2.velocityOfPoint(c2) - node1.velocityOfPoint(c1)
+    spring + v.project(x) * _damping
+
+  def applyForce(): Unit =
+    val f = force
+    node1.applyForce(f, connection1)
+    node2.applyForce(-f, connection2)
+
+  def correctVelocity(h: Double): Unit = ()
+
+  def correctPosition(h: Double): Unit = ()
+
+  override def toString: String =
+    s"SpringJoint($node1, $node2, springConstant = $springConstant, initialLength = $initialLength)"

@@ -1,0 +1,88 @@
+package sims.geometry
+
+/** An immutable two-dimensional vector of doubles, the basic quantity of SiMS (positions,
+  * velocities, forces, impulses). Angular quantities are plain `Double`s: the z component of
+  * the 3D pseudovector.
+  */
+final case class Vector2D(x: Double, y: Double):
+
+  /** Vector sum. */
+  inline def +(v: Vector2D): Vector2D = Vector2D(x + v.x, y + v.y)
+
+  /** Vector difference. */
+  inline def -(v: Vector2D): Vector2D = Vector2D(x - v.x, y - v.y)
+
+  /** This vector scaled by `n`. */
+  inline def *(n: Double): Vector2D = Vector2D(x * n, y * n)
+
+  /** This vector divided by `n`. */
+  inline def /(n: Double): Vector2D = Vector2D(x / n, y / n)
+
+  /** The opposite vector. */
+  inline def unary_- : Vector2D = Vector2D(-x, -y)
+
+  /** Dot product. */
+  inline def dot(v: Vector2D): Double = x * v.x + y * v.y
+
+  /** The z component of the 3D cross product: `x * v.y - y * v.x`. */
+  inline def cross(v: Vector2D): Double = x * v.y - y * v.x
+
+  /** Euclidean length. */
+  def length: Double = math.sqrt(x * x + y * y)
+
+  /** The unit vector of this direction; fails on the null vector, which has no direction. */
+  def unit: Vector2D =
+    val l = length
+    if l == 0 then throw IllegalArgumentException("Vector2D.unit: the null vector has no unit vector")
+    Vector2D(x / l, y / l)
+
+  /** The vector projection of this vector onto `v`; the null vector when `v` is null. */
+  def project(v: Vector2D): Vector2D =
+    val vv = v dot v
+    if vv == 0 then Vector2D.Null else v * ((this dot v) / vv)
+
+  /** This vector rotated counter-clockwise by `angle` radians. */
+  def rotate(angle: Double): Vector2D =
+    val c = math.cos(angle)
+    val s = math.sin(angle)
+    Vector2D(x * c - y * s, x * s + y * c)
+
+  /** The left normal `(-y, x)`, this vector rotated by +90 degrees. */
+  inline def leftNormal: Vector2D = Vector2D(-y, x)
+
+  /** The right normal `(y, -x)`, this vector rotated by -90 degrees. */
+  inline def rightNormal: Vector2D = Vector2D(y, -x)
+
+  /** True for the null vector (both components exactly zero). */
+  def isNull: Boolean = x == 0 && y == 0
+
+  /** The components as a list `List(x, y)`. */
+  def components: List[Double] = List(x, y)
+
+  /** True when both components are finite (neither NaN nor infinite). */
+  def isFinite: Boolean = !x.isNaN && !y.isNaN && !x.isInfinite && !y.isInfinite
+
+  override def toString: String = s"($x, $y)"
+
+/** Constants of [[Vector2D]]. */
+object Vector2D:
+  /** The null vector (0, 0). */
+  val Null: Vector2D = Vector2D(0, 0)
+
+  /** The unit vector along x, (1, 0). */
+  val i: Vector2D = Vector2D(1, 0)
+
+  /** The unit vector along y, (0, 1). */
+  val j: Vector2D = Vector2D(0, 1)
+
+  /** Checks that `value` is finite; otherwise throws an IllegalArgumentException naming `name`. */
+  private[sims] def requireFinite(name: String, value: Vector2D): Vector2D =
+    if value == null then throw IllegalArgumentException(s"$name must not be null")
+    if !value.isFinite then throw IllegalArgumentException(s"$name must be finite, got $value")
+    value
+
+  /** Checks that `value` is finite; otherwise throws an IllegalArgumentException naming `name`. */
+  private[sims] def requireFinite(name: String, value: Double): Double =
+    if value.isNaN || value.isInfinite then
+      throw IllegalArgumentException(s"$name must be finite, got $value")
+    value
