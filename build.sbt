@@ -18,7 +18,9 @@ lazy val root = (project in file("."))
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
     licenses := List(License.MIT),
     libraryDependencies ++= testDependencies,
-    Test / parallelExecution := false
+    Test / parallelExecution := false,
+    coverageMinimumStmtTotal := 90,
+    coverageFailOnMinimum := true
   )
 
 /** Example scenes, headless runs and the viewer. */
