@@ -18,8 +18,9 @@ final class Rectangle(val halfWidth: Double, val halfHeight: Double, val density
   override def toString: String =
     s"Rectangle(halfWidth = $halfWidth, halfHeight = $halfHeight, density = $density, pos = $pos)"
 
-private object Rectangle:
-  def corners(halfWidth: Double, halfHeight: Double): IndexedSeq[Vector2D] =
+/** Vertex construction of [[Rectangle]]. */
+object Rectangle:
+  private[dynamics] def corners(halfWidth: Double, halfHeight: Double): IndexedSeq[Vector2D] =
     Shape.requirePositive("halfWidth", halfWidth)
     Shape.requirePositive("halfHeight", halfHeight)
     IndexedSeq(Vector2D(halfWidth, halfHeight), Vector2D(-halfWidth, halfHeight),

@@ -19,8 +19,9 @@ final class RegularPolygon(val n: Int, val radius: Double, val density: Double)
 
   override def toString: String = s"RegularPolygon(n = $n, radius = $radius, density = $density, pos = $pos)"
 
-private object RegularPolygon:
-  def corners(n: Int, radius: Double): IndexedSeq[Vector2D] =
+/** Vertex construction of [[RegularPolygon]]. */
+object RegularPolygon:
+  private[dynamics] def corners(n: Int, radius: Double): IndexedSeq[Vector2D] =
     if n < 3 then throw IllegalArgumentException(s"n must be at least 3, got $n")
     Shape.requirePositive("radius", radius)
     IndexedSeq.tabulate(n)(i => Vector2D(0, radius).rotate(2 * math.Pi * i / n))

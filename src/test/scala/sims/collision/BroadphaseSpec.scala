@@ -1,0 +1,99 @@
+package sims.collision
+
+import org.scalacheck.Gen
+import org.scalatest.funsuite.AnyFunSuite
+import org.scalatest.matchers.should.Matchers
+import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
+import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
+import sims.geometry.Vector2D
+
+/** The grid broadphase finds exactly the pairs a brute-force all-pairs test finds. */
+class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
+
+  private def bruteForce(world: World): Seq[(Shape, Shape)] =
+    val shapes = world.shapes
+    for
+      i <- shapes.indices
+      j <- i + 1 until shapes.length
+      a = shapes(i)
+      b = shapes(j)
+      if GridDetector.candidates(a, b)
+    yield (a, b)
+
+  private val shape: Gen[Shape] =
+    for
+      size <- Gen.oneOf(Gen.choose(0.01, 0.3), Gen.choose(0.3, 3.0), Gen.choose(3.0, 30.0))
+      kind <- Gen.choose(0, 2)
+      x <- Gen.choose(-20.0, 20.0)
+      y <- Gen.choose(-20.0, 20.0)
+      rotation <- Gen.choose(0.0, 3.0)
+    yield
+      val s = kind match
+        case 0 => Circle(size, 1)
+        case 1 => Rectangle(size, size / 2, 1)
+        case _ => RegularPolygon(5, size, 1)
+      s.pos = Vector2D(x, y)
+      s.rotation = rotation
+      s
+
+  private def scene(shapes: Seq[Shape], gridSide: Double): World =
+    val world = World()
+    world.detector.asInstanceOf[GridDetector].gridSide = gridSide
+    // One huge ground box, and some bodies of two shapes.
+    val ground = Rectangle(200, 5, 1)
+    ground.pos = Vector2D(0, -10)
+    world += ground.asBody
+    shapes.grouped(2).zipWithIndex.foreach { (group, i) =>
+      if i % 3 == 0 then world += Body(group*) else group.foreach(s => world += s.asBody)
+    }
+    world
+
+  test("grid pairs equal brute-force pairs, in order, each once") {
+    forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0, 7.0), minSuccessful(40)) { (shapes, side) =>
+      val world = scene(shapes, side)
+      val detector = world.detector.asInstanceOf[GridDetector]
+      detector.detect()
+      val found = detector.candidatePairs
+      found.map(p => (p._1.worldIndex, p._2.worldIndex)).sorted shouldBe
+        bruteForce(world).map(p => (p._1.worldIndex, p._2.worldIndex)).sorted
+      found.foreach(p => p._1.worldIndex should be < p._2.worldIndex)
+      found.distinct.size shouldBe found.size
+    }
+  }
+
+  test("pair filters: same body, not collidable, transient, both fixed") {
+    val world = World()
+    val a = Circle(1, 1)
+    val b = Circle(1, 1); b.pos = Vector2D(0.5, 0)
+    world += Body(a, b) // same body
+    val c = Circle(1, 1); c.pos = Vector2D(0, 0.5); c.collidable = false
+    world += c.asBody
+    val d = Circle(1, 1); d.pos = Vector2D(0.2, 0.2); d.transientShapes = Set(a, b)
+    world += d.asBody
+    val e = Circle(1, 1); e.pos = Vector2D(-0.3, 0); e.asBody.fixed = true
+    val f = Circle(1, 1); f.pos = Vector2D(-0.3, 0.1); f.asBody.fixed = true
+    world += e.body
+    world += f.body
+    val detector = world.detector.asInstanceOf[GridDetector]
+    detector.detect()
+    detector.candidatePairs.map((p, q) => (p.worldIndex, q.worldIndex)).toSet shouldBe
+      Set((0, 4), (0, 5), (1, 4), (1, 5), (3, 4), (3, 5)) // a, b, d with e, f; never e-f
+  }
+
+  test("the same scene gives the same pairs in the same order") {
+    def pairs(): Seq[(Int, Int)] =
+      val world = World()
+      for i <- 0 until 200 do
+        val c = Circle(0.3, 1)
+        c.pos = Vector2D((i * 37 % 23) * 0.5, (i * 11 % 17) * 0.5)
+        world += c.asBody
+      world.detector.detect()
+      world.detector.asInstanceOf[GridDetector].candidatePairs.map((a, b) => (a.worldIndex, b.worldIndex))
+    pairs() shouldBe pairs()
+  }
+
+  test("gridSide must be positive") {
+    val d = GridDetector(World())
+    d.gridSide shouldBe 2.0
+    intercept[IllegalArgumentException](d.gridSide = 0).getMessage should include("gridSide")
+  }
