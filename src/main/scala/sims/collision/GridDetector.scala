@@ -81,12 +81,15 @@ class GridDetector(val world: World) extends Detector:
       if s.collidable then
         val x0 = GridDetector.cell(s.minX, side); val x1 = GridDetector.cell(s.maxX, side)
         val y0 = GridDetector.cell(s.minY, side); val y1 = GridDetector.cell(s.maxY, side)
-        if (x1 - x0 + 1).toLong * (y1 - y0 + 1) > GridDetector.LargeShapeCells then large += s
+        if (x1.toLong - x0 + 1) * (y1.toLong - y0 + 1) > GridDetector.LargeShapeCells then large += s
         else
-          var cx = x0
-          while cx <= x1 do
-            var cy = y0
-            while cy <= y1 do
+          // Long counters: a cell index at Int.MaxValue must not wrap around.
+          var cxLong = x0.toLong
+          while cxLong <= x1 do
+            val cx = cxLong.toInt
+            var cyLong = y0.toLong
+            while cyLong <= y1 do
+              val cy = cyLong.toInt
               // Pair s with the earlier shapes of this cell, then join the cell.
               var entry = grid.firstEntry(cx, cy)
               while entry >= 0 do
@@ -95,8 +98,8 @@ class GridDetector(val world: World) extends Detector:
                   pairs.add(other, s)
                 entry = grid.nextEntry(entry)
               grid.insert(cx, cy, i)
-              cy += 1
-            cx += 1
+              cyLong += 1
+            cxLong += 1
       i += 1
     // Large shapes meet every collidable shape directly.
     var k = 0

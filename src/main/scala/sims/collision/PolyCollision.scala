@@ -7,7 +7,8 @@ import sims.geometry.{ConvexPolygon, Vector2D}
 /** Collision of two convex polygons, found with the separating axis theorem. For the pair
   * (first, second) the side normals of the second, then of the first, are tried; the one with
   * the smallest positive overlap of the projections (the first found on ties) gives the normal,
-  * and its polygon is the reference. Points: the incident polygon's vertices inside the
+  * and its polygon is the reference; the normal is that side's outward normal, turned round if
+  * it faces away from the incident polygon. Points: the incident polygon's vertices inside the
   * reference, then the reference's vertices inside the incident polygon.
   */
 final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon) extends Collision:
@@ -17,8 +18,16 @@ final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPo
   val shape1: Shape & ConvexPolygon = if secondIsReference then second else first
   val shape2: Shape & ConvexPolygon = if secondIsReference then first else second
 
-  override private[sims] val normalX: Double = PolyCollision.sideNormalX(shape1, PolyCollision.sideOf(axis, second))
-  override private[sims] val normalY: Double = PolyCollision.sideNormalY(shape1, PolyCollision.sideOf(axis, second))
+  // The overlap of two intervals does not depend on the axis' sign, so parallel opposite
+  // sides (a box's top and bottom) tie and the side found first may face away from the
+  // incident polygon. The normal is therefore oriented from the reference towards the
+  // incident polygon (see the deviations: the original hid this by reporting every pair in
+  // both orders).
+  private val facing = PolyCollision.facing(shape1, shape2,
+    PolyCollision.sideNormalX(shape1, PolyCollision.sideOf(axis, second)),
+    PolyCollision.sideNormalY(shape1, PolyCollision.sideOf(axis, second)))
+  override private[sims] val normalX: Double = facing * PolyCollision.sideNormalX(shape1, PolyCollision.sideOf(axis, second))
+  override private[sims] val normalY: Double = facing * PolyCollision.sideNormalY(shape1, PolyCollision.sideOf(axis, second))
 
   private val (xs, ys) =
     val bx = Array.newBuilder[Double]
@@ -77,6 +86,24 @@ object PolyCollision:
         bestOverlap = overlap
       k += 1
     if best < 0 then 0 else best // no positive overlap (the polygons only touch): first axis
+
+  /** 1 if (nx, ny) points from the reference's vertex centroid towards the incident's, else -1. */
+  private def facing(reference: ConvexPolygon, incident: ConvexPolygon, nx: Double, ny: Double): Double =
+    val dx = centroidX(incident) - centroidX(reference)
+    val dy = centroidY(incident) - centroidY(reference)
+    if nx * dx + ny * dy < 0 then -1.0 else 1.0
+
+  private def centroidX(p: ConvexPolygon): Double =
+    var sum = 0.0
+    var i = 0
+    while i < p.vertexCount do { sum += p.vertexX(i); i += 1 }
+    sum / p.vertexCount
+
+  private def centroidY(p: ConvexPolygon): Double =
+    var sum = 0.0
+    var i = 0
+    while i < p.vertexCount do { sum += p.vertexY(i); i += 1 }
+    sum / p.vertexCount
 
   private def sideOf(k: Int, second: ConvexPolygon): Int =
     if k < second.vertexCount then k else k - second.vertexCount
