@@ -101,6 +101,15 @@ final class Body(initialShapes: Shape*):
     vy += py * invMass
     w += (rx * py - ry * px) * invI
 
+  /** Adds the force (forceX, forceY) acting at offset (rx, ry) from the centre (solver use:
+    * no checks, so a non-finite force reaches the world's guard instead of failing here).
+    */
+  private[sims] def forceAt(forceX: Double, forceY: Double, rx: Double, ry: Double): Unit =
+    if !_fixed then
+      fx += forceX
+      fy += forceY
+      tau += rx * forceY - ry * forceX
+
   /** Resulting force on the centre of mass, N. */
   def force: Vector2D = Vector2D(fx, fy)
 

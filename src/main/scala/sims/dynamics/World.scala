@@ -110,7 +110,7 @@ class World:
   def postStep(): Unit = ()
 
   /** Simulates one time step: the phases of SPEC section 2, in order. If a phase produces a
-    * non-finite velocity or position, the world is restored to its state before the step and
+    * non-finite force, velocity or position, the world is restored to its state before the step and
     * an ArithmeticException names the body and the phase.
     */
   def step(): Unit =
@@ -119,15 +119,16 @@ class World:
     val h = _timeStep
     _time += h                       // phase 1
     applyJointForces()               // phase 2
+    guard("joint forces", Checked.Forces)
     integrateAccelerations(h)        // phase 3
-    guard("integration of accelerations", positions = false)
+    guard("integration of accelerations", Checked.Velocities)
     correctVelocities(h)             // phase 4
-    guard("velocity correction", positions = false)
+    guard("velocity correction", Checked.Velocities)
     integrateVelocities(h)           // phase 5
-    guard("integration of velocities", positions = true)
+    guard("integration of velocities", Checked.Positions)
     if enablePositionCorrection then
       correctPositions(h)            // phase 6
-      guard("position correction", positions = true)
+      guard("position correction", Checked.Positions)
     postStep()                       // phase 7
 
   /** A copy of the dynamic state of every body and of the time, to `restore` later. */
@@ -218,19 +219,25 @@ class World:
       iteration += 1
 
   /** Throws, after restoring the state before the step, if any body is no longer finite. */
-  private def guard(phase: String, positions: Boolean): Unit =
+  private def guard(phase: String, checked: Checked): Unit =
     var i = 0
     while i < bodyBuffer.length do
       val b = bodyBuffer(i)
-      val finite =
-        if positions then World.finite(b.x) && World.finite(b.y) && World.finite(b.angle)
-        else World.finite(b.vx) && World.finite(b.vy) && World.finite(b.w)
+      val finite = checked match
+        case Checked.Forces => World.finite(b.fx) && World.finite(b.fy) && World.finite(b.tau)
+        case Checked.Velocities => World.finite(b.vx) && World.finite(b.vy) && World.finite(b.w)
+        case Checked.Positions => World.finite(b.x) && World.finite(b.y) && World.finite(b.angle)
       if !finite then
-        val what = if positions then "position" else "velocity"
-        val message = s"non-finite $what of body $i ($b) in phase '$phase'; the world was restored to its state before the step"
+        val message = s"non-finite ${checked.quantity} of body $i ($b) in phase '$phase'; the world was restored to its state before the step"
         beforeStep.load(this)
         throw ArithmeticException(message)
       i += 1
+
+  /** What a guard checks after a phase. */
+  private enum Checked(val quantity: String):
+    case Forces extends Checked("force")
+    case Velocities extends Checked("velocity")
+    case Positions extends Checked("position")
 
 /** Defaults of a new [[World]]. */
 object World:

@@ -13,15 +13,26 @@ class GuardAndReplaySpec extends AnyFunSuite with Matchers:
     val (world, balls) = Scenes.ballStack(10)
     for _ <- 1 to 30 do world.step()
     val before = StateHash(world)
-    balls(3).applyForce(Vector2D(Double.MaxValue, 0))
-    balls(3).applyForce(Vector2D(Double.MaxValue, 0)) // force is now infinite
+    balls(3).applyForce(Vector2D(Double.MaxValue, 0)) // finite, but F / m overflows
     val error = intercept[ArithmeticException](world.step())
     error.getMessage should include("body 6") // 3 fixed bodies come first
+    error.getMessage should include("velocity")
     error.getMessage should include("integration of accelerations")
     StateHash(world) shouldBe before
-    balls(3).force.x shouldBe Double.PositiveInfinity // forces are state too: restored as they were
+    balls(3).force.x shouldBe Double.MaxValue // forces are state too: restored as they were
     balls(3).force = Vector2D.Null
     world.step() // and the world goes on
+  }
+
+  test("an infinite force from the forces phase is caught before it is integrated") {
+    val (world, balls) = Scenes.ballStack(3)
+    balls(0).applyForce(Vector2D(Double.MaxValue, 0))
+    balls(0).applyForce(Vector2D(Double.MaxValue, 0)) // the sum overflows
+    val before = StateHash(world)
+    val error = intercept[ArithmeticException](world.step())
+    error.getMessage should include("non-finite force of body 3")
+    error.getMessage should include("joint forces")
+    StateHash(world) shouldBe before
   }
 
   test("an absurd velocity that overflows positions is caught in the position phase") {

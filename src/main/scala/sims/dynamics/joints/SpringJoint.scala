@@ -58,8 +58,10 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
 
   def applyForce(): Unit =
     val f = force
-    node1.applyForce(f, connection1)
-    node2.applyForce(-f, connection2)
+    val r1 = a1.arm
+    val r2 = a2.arm
+    node1.forceAt(f.x, f.y, r1.x, r1.y)
+    node2.forceAt(-f.x, -f.y, r2.x, r2.y)
 
   def correctVelocity(h: Double): Unit = ()
 
