@@ -13,6 +13,7 @@ lazy val testDependencies = Seq(
 
 /** The library: only the Scala standard library at run time. */
 lazy val root = (project in file("."))
+  .aggregate(LocalProject("examples")) // `./sbt test` runs the examples' tests too
   .settings(
     name := "sims",
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",

@@ -29,7 +29,7 @@ class DeterminismSpec extends AnyFunSuite with Matchers:
     world += SpringJoint(created(1), created(2), 30)
     world
 
-  test("the same scene built twice gives bit-identical trajectories over 10,000 steps") {
+  test("the same scene built twice gives bit-identical trajectories over 10,000 steps", sims.SlowTest) {
     val a = scene(0 until 12)
     val b = scene(0 until 12)
     for i <- 1 to 10000 do
@@ -38,7 +38,7 @@ class DeterminismSpec extends AnyFunSuite with Matchers:
       if i % 1000 == 0 then StateHash(a) shouldBe StateHash(b)
   }
 
-  test("creating the bodies in another order (other identity hashes) changes nothing") {
+  test("creating the bodies in another order (other identity hashes) changes nothing", sims.SlowTest) {
     val a = scene(0 until 12)
     val b = scene((0 until 12).reverse)
     val c = scene(Seq(5, 3, 11, 0, 7, 1, 9, 2, 10, 4, 8, 6))

@@ -72,7 +72,7 @@ class FuzzSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
   private def kinetic(world: World): Double = world.bodies.filterNot(_.fixed).map(b =>
     0.5 * b.mass * (b.linearVelocity dot b.linearVelocity) + 0.5 * b.I * b.angularVelocity * b.angularVelocity).sum
 
-  test("random scenes with gravity, joints and springs run 2,000 steps without errors or NaN") {
+  test("random scenes with gravity, joints and springs run 2,000 steps without errors or NaN", sims.SlowTest) {
     forAll(sceneSpec, minSuccessful(8)) { spec =>
       val world = build(spec, gravity = true, springs = true)
       for _ <- 1 to 2000 do world.step()
@@ -94,7 +94,7 @@ class FuzzSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     finite(world) shouldBe true
   }
 
-  test("in zero gravity, with restitution <= 1 and no springs, kinetic energy never rises above 105%") {
+  test("in zero gravity, with restitution <= 1 and no springs, kinetic energy never rises above 105%", sims.SlowTest) {
     forAll(sceneSpec, minSuccessful(8)) { spec =>
       val world = build(spec, gravity = false, springs = false)
       val start = kinetic(world)

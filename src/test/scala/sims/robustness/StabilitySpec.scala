@@ -26,14 +26,14 @@ class StabilitySpec extends AnyFunSuite with Matchers:
     val end = kinetic(bodies)
     (start, end)
 
-  test("BallStack runs 100 s: finite, inside the container, kinetic energy below 1% of the start") {
+  test("BallStack runs 100 s: finite, inside the container, kinetic energy below 1% of the start", sims.SlowTest) {
     val (world, balls) = Scenes.ballStack(52)
     val (start, end) = runAndCheck(world, balls, b => math.abs(b.pos.x) < 2 && b.pos.y > 0 && b.pos.y < 20)
     info(f"energy at start $start%.2f J, kinetic energy after 100 s $end%.5f J")
     end should be < 0.01 * start
   }
 
-  test("a stack of 10 boxes in a container runs 100 s: finite, contained, kinetic energy below 1% of the start") {
+  test("a stack of 10 boxes in a container runs 100 s: finite, contained, kinetic energy below 1% of the start", sims.SlowTest) {
     // The faithful solver (no warm starting, full overlap correction at every contact point)
     // does not keep a tall stack standing: the boxes topple within seconds and settle on the
     // floor. This test holds the laws; the toppling is reported, not hidden.
