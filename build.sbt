@@ -13,7 +13,7 @@ lazy val testDependencies = Seq(
 
 /** The library: only the Scala standard library at run time. */
 lazy val root = (project in file("."))
-  .aggregate(LocalProject("examples")) // `./sbt test` runs the examples' tests too
+  .aggregate(LocalProject("examples"), LocalProject("docs")) // `./sbt test` runs them too
   .settings(
     name := "sims",
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
@@ -34,4 +34,19 @@ lazy val examples = (project in file("examples"))
     run / fork := true,
     run / connectInput := true,
     Test / fork := true
+  )
+
+/** The documentation book in docs/: `./sbt test` compiles and runs every snippet with mdoc. */
+// mdoc wants its input apart from the project's base directory: the base holds no sources.
+lazy val docs = (project in file("target/mdoc-project"))
+  .dependsOn(root)
+  .enablePlugins(MdocPlugin)
+  .settings(
+    name := "sims-docs",
+    publish / skip := true,
+    // Build output stays out of docs/, which mdoc reads.
+    target := (ThisBuild / baseDirectory).value / "target" / "docs",
+    mdocIn := (ThisBuild / baseDirectory).value / "docs",
+    mdocOut := target.value / "mdoc",
+    Test / test := mdoc.toTask("").value
   )
