@@ -146,7 +146,7 @@ class World:
     var i = 0
     while i < jointBuffer.length do
       val j = jointBuffer(i)
-      if (j.node1.world ne this) || (j.node2.world ne this) then
+      if !j.bodiesIn(this) then
         throw IllegalArgumentException(s"joint $j connects a body that is not in this world")
       i += 1
 

@@ -1,6 +1,6 @@
 package sims.dynamics.joints
 
-import sims.dynamics.{Body, Constraint}
+import sims.dynamics.{Body, Constraint, World}
 import sims.geometry.Vector2D
 
 /** A constraint between two bodies, `node1` and `node2` (documentation 4.9). */
@@ -16,6 +16,11 @@ abstract class Joint extends Constraint:
     if node1 == null then throw IllegalArgumentException("node1 must not be null")
     if node2 == null then throw IllegalArgumentException("node2 must not be null")
     if node1 eq node2 then throw IllegalArgumentException(s"a joint needs two different bodies, got $node1 twice")
+
+  /** Whether the bodies this joint moves are in `world`; `World.step` fails unless they are.
+    * A joint with an internal body that belongs to no world (the MouseJoint's ground) overrides it.
+    */
+  private[sims] def bodiesIn(world: World): Boolean = (node1.world eq world) && (node2.world eq world)
 
 /** A point fixed on a body: stored relative to the body's centre and rotation at creation,
   * it moves and turns with the body.

@@ -1,0 +1,92 @@
+package sims.dynamics.joints
+
+import sims.dynamics.Body
+import sims.geometry.{Matrix22, Vector2D}
+
+/** Pins two bodies together at one point; they may turn freely about it (a hinge).
+  *
+  * Derivation, with p1 = x1 + r1 and p2 = x2 + r2 the pin's points on each body (both at
+  * `anchor` when the joint is made) and `w x r = w (-r.y, r.x)`:
+  *   C     = p2 - p1                                          (two components)
+  *   Cdot  = v2 + w2 x r2 - v1 - w1 x r1
+  *   J     = [-E, -(r1.leftNormal), E, r2.leftNormal]         (E the 2x2 identity)
+  *   K = J M^-1 J^T = (1/m1 + 1/m2) E
+  *                    + 1/I1 [r1.y^2, -r1.x r1.y; -r1.x r1.y, r1.x^2]
+  *                    + 1/I2 [r2.y^2, -r2.x r2.y; -r2.x r2.y, r2.x^2]
+  * Velocity: solve K P = -Cdot; impulse P on body 2 at p2 and -P on body 1 at p1.
+  * Position: solve K P = -C; body 1 moves by -P/m1 and turns by -(r1 x P)/I1, body 2 moves by
+  * +P/m2 and turns by +(r2 x P)/I2 (velocities unchanged), as the DistanceJoint does.
+  * A fixed body has 1/m = 1/I = 0; K is singular only when both bodies are fixed, and then
+  * nothing is corrected. The original SiMS had a wrong K and no position correction
+  * (deviation 2 of the SPEC).
+  *
+  * @param anchor the pin, world coordinates at creation; it then moves with both bodies
+  */
+final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) extends Joint:
+  checkNodes()
+  Vector2D.requireFinite("anchor", anchor)
+
+  private val point1 = BodyPoint(node1, anchor)
+  private val point2 = BodyPoint(node2, anchor)
+
+  /** Current world position of the pin on node1. */
+  def connection1: Vector2D = point1.position
+
+  /** Current world position of the pin on node2. */
+  def connection2: Vector2D = point2.position
+
+  /** How far apart the pin's points on the two bodies are now (0 when the joint holds), m. */
+  def separation: Double = (connection2 - connection1).length
+
+  /** The change of the pin points' relative velocity per unit impulse, when the impulse acts
+    * at arms (b1x, b1y), (b2x, b2y) and the pin points are at arms (a1x, a1y), (a2x, a2y):
+    * (1/m1 + 1/m2) E + sum over both bodies of 1/I [a.y b.y, -a.y b.x; -a.x b.y, a.x b.x].
+    * With a = b this is the symmetric K of the derivation.
+    */
+  private def effectiveMassMatrix(a1x: Double, a1y: Double, b1x: Double, b1y: Double,
+      a2x: Double, a2y: Double, b2x: Double, b2y: Double): Matrix22 =
+    val invMass = node1.invMass + node2.invMass
+    val invI1 = node1.invI
+    val invI2 = node2.invI
+    Matrix22(
+      invMass + invI1 * a1y * b1y + invI2 * a2y * b2y, -invI1 * a1y * b1x - invI2 * a2y * b2x,
+      -invI1 * a1x * b1y - invI2 * a2x * b2y, invMass + invI1 * a1x * b1x + invI2 * a2x * b2x)
+
+  def correctVelocity(h: Double): Unit =
+    point1.update()
+    point2.update()
+    val b1 = node1
+    val b2 = node2
+    // Relative velocity of the two pin points: v + w x r for each body.
+    val cdotX = b2.vx - b2.w * point2.armY - b1.vx + b1.w * point1.armY
+    val cdotY = b2.vy + b2.w * point2.armX - b1.vy - b1.w * point1.armX
+    // Both impulses act at one point, the middle of the two pin points, so that they form no
+    // couple: angular momentum is conserved exactly even while the pin is open. The impulse is
+    // chosen so that the pin points' relative velocity becomes 0, as in the textbook constraint.
+    val middleX = 0.5 * (point1.x + point2.x)
+    val middleY = 0.5 * (point1.y + point2.y)
+    val m1x = middleX - b1.x
+    val m1y = middleY - b1.y
+    val m2x = middleX - b2.x
+    val m2y = middleY - b2.y
+    val k = effectiveMassMatrix(point1.armX, point1.armY, m1x, m1y, point2.armX, point2.armY, m2x, m2y)
+    val impulse = k.solve(Vector2D(-cdotX, -cdotY))
+    b1.impulseAt(-impulse.x, -impulse.y, m1x, m1y)
+    b2.impulseAt(impulse.x, impulse.y, m2x, m2y)
+
+  def correctPosition(h: Double): Unit =
+    point1.update()
+    point2.update()
+    val b1 = node1
+    val b2 = node2
+    val cX = point2.x - point1.x
+    val cY = point2.y - point1.y
+    val p = effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
+      point2.armX, point2.armY, point2.armX, point2.armY).solve(Vector2D(-cX, -cY))
+    // r x P for each body, with the arms taken before either body moves.
+    val turn1 = point1.armX * p.y - point1.armY * p.x
+    val turn2 = point2.armX * p.y - point2.armY * p.x
+    b1.displace(-p.x * b1.invMass, -p.y * b1.invMass, -turn1 * b1.invI)
+    b2.displace(p.x * b2.invMass, p.y * b2.invMass, turn2 * b2.invI)
+
+  override def toString: String = s"RevoluteJoint($node1, $node2, anchor = $anchor)"
