@@ -18,6 +18,20 @@ lazy val root = (project in file("."))
     name := "sims",
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
     licenses := List(License.MIT),
+    homepage := None,
+    // Source control of the project, for the POM (no web address: the scm connection only).
+    pomExtra :=
+      <scm>
+        <connection>scm:git:git@github.com:sims-scala/sims.git</connection>
+        <developerConnection>scm:git:git@github.com:sims-scala/sims.git</developerConnection>
+      </scm>
+      <developers>
+        <developer>
+          <id>sims-scala</id>
+          <name>The SiMS for Scala contributors</name>
+        </developer>
+      </developers>,
+    Compile / doc / scalacOptions ++= Seq("-project", "SiMS", "-doc-root-content", "docs/api-overview.md"),
     libraryDependencies ++= testDependencies,
     Test / parallelExecution := false,
     coverageMinimumStmtTotal := 90,
