@@ -13,7 +13,10 @@ import sims.geometry.{Matrix22, Vector2D}
   *   K = J M^-1 J^T = (1/m1 + 1/m2) E
   *                    + 1/I1 [r1.y^2, -r1.x r1.y; -r1.x r1.y, r1.x^2]
   *                    + 1/I2 [r2.y^2, -r2.x r2.y; -r2.x r2.y, r2.x^2]
-  * Velocity: solve K P = -Cdot; impulse P on body 2 at p2 and -P on body 1 at p1.
+  * Velocity: solve K P = -Cdot; impulse P on body 2 and -P on body 1. Both act at the middle of
+  * p1 and p2 (not each at its own point): with the pin open by C, impulses at p1 and p2 would
+  * form a couple C x P and change the angular momentum. K is then taken with the arms to that
+  * middle on one side (see `correctVelocity`); it is the K above whenever C = 0.
   * Position: solve K P = -C; body 1 moves by -P/m1 and turns by -(r1 x P)/I1, body 2 moves by
   * +P/m2 and turns by +(r2 x P)/I2 (velocities unchanged), as the DistanceJoint does.
   * A fixed body has 1/m = 1/I = 0; K is singular only when both bodies are fixed, and then
@@ -61,18 +64,28 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     val cdotX = b2.vx - b2.w * point2.armY - b1.vx + b1.w * point1.armY
     val cdotY = b2.vy + b2.w * point2.armX - b1.vy - b1.w * point1.armX
     // Both impulses act at one point, the middle of the two pin points, so that they form no
-    // couple: angular momentum is conserved exactly even while the pin is open. The impulse is
-    // chosen so that the pin points' relative velocity becomes 0, as in the textbook constraint.
+    // couple: angular momentum is then conserved exactly even while the pin is open (position
+    // correction off). The impulse is chosen so that the pin points' relative velocity becomes 0,
+    // as in the textbook constraint; its matrix is the textbook K when the pin is closed. When the
+    // pin is wide open (a joint torn apart by contacts), that matrix can approach singularity and
+    // give huge impulses; then the textbook impulses at the pin points are used instead.
     val middleX = 0.5 * (point1.x + point2.x)
     val middleY = 0.5 * (point1.y + point2.y)
     val m1x = middleX - b1.x
     val m1y = middleY - b1.y
     val m2x = middleX - b2.x
     val m2y = middleY - b2.y
-    val k = effectiveMassMatrix(point1.armX, point1.armY, m1x, m1y, point2.armX, point2.armY, m2x, m2y)
-    val impulse = k.solve(Vector2D(-cdotX, -cdotY))
-    b1.impulseAt(-impulse.x, -impulse.y, m1x, m1y)
-    b2.impulseAt(impulse.x, impulse.y, m2x, m2y)
+    val mixed = effectiveMassMatrix(point1.armX, point1.armY, m1x, m1y, point2.armX, point2.armY, m2x, m2y)
+    val textbook = effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
+      point2.armX, point2.armY, point2.armX, point2.armY)
+    if !(mixed.determinant >= 0.5 * textbook.determinant) then
+      val impulse = textbook.solve(Vector2D(-cdotX, -cdotY))
+      b1.impulseAt(-impulse.x, -impulse.y, point1.armX, point1.armY)
+      b2.impulseAt(impulse.x, impulse.y, point2.armX, point2.armY)
+    else
+      val impulse = mixed.solve(Vector2D(-cdotX, -cdotY))
+      b1.impulseAt(-impulse.x, -impulse.y, m1x, m1y)
+      b2.impulseAt(impulse.x, impulse.y, m2x, m2y)
 
   def correctPosition(h: Double): Unit =
     point1.update()
@@ -90,3 +103,4 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     b2.displace(p.x * b2.invMass, p.y * b2.invMass, turn2 * b2.invI)
 
   override def toString: String = s"RevoluteJoint($node1, $node2, anchor = $anchor)"
+
