@@ -47,7 +47,15 @@ lazy val examples = (project in file("examples"))
     libraryDependencies ++= testDependencies,
     run / fork := true,
     run / connectInput := true,
-    Test / fork := true
+    // Runs start in the repository's root, so `out/` lands next to README.md.
+    run / baseDirectory := (LocalRootProject / baseDirectory).value,
+    // The forked run never has a console of its own: pass its output straight through and
+    // tell it whether sbt's is a terminal, so the progress bar redraws in place only there.
+    run / outputStrategy := Some(StdoutOutput),
+    run / javaOptions += s"-Dsims.examples.terminal=${System.console() != null}",
+    Test / fork := true,
+    Test / javaOptions += "-Djava.awt.headless=true",
+    Test / parallelExecution := false
   )
 
 /** The documentation book in docs/: `./sbt test` compiles and runs every snippet with mdoc. */

@@ -1,19 +1,75 @@
 package sims.examples
 
-import sims.dynamics.{Body, Circle, World}
-import sims.dynamics.joints.DistanceJoint
-import sims.geometry.Vector2D
+import java.io.File
+import sims.examples.headless.HeadlessRun
+import sims.examples.scenes.{Scene, Scenes}
 
-/** Main job: a pendulum run headless, printing the bob's position every half second. */
-@main def runPendulum(): Unit =
-  val world = World()
-  val pivot = Body(Circle(0.05, 1)); pivot.fixed = true
-  val bob = Body(Circle(0.1, 1)); bob.pos = Vector2D(1, 0)
-  world += pivot
-  world += bob
-  world += DistanceJoint(pivot, pivot.pos, bob, bob.pos)
-  world.enableCollisionDetection = false
-  val stepsPerPrint = math.round(0.5 / world.timeStep).toInt
-  for i <- 0 to 10 do
-    if i > 0 then for _ <- 1 to stepsPerPrint do world.step()
-    println(f"t = ${world.time}%5.2f s  bob at (${bob.pos.x}%7.4f, ${bob.pos.y}%7.4f)")
+/** Command line of the examples: `[Scene] [--seconds S] [--out DIR]` runs a scene headless,
+  * `--gui [Scene]` opens the viewer, `--list` lists the scenes.
+  */
+object Main:
+  /** Simulated seconds of a headless run unless `--seconds` says otherwise. */
+  val DefaultSeconds = 5.0
+  /** Output directory unless `--out` says otherwise. */
+  val DefaultOut = "out"
+
+  /** Parsed command line. */
+  final case class Options(scene: Option[String] = None, seconds: Double = DefaultSeconds,
+      out: File = File(DefaultOut), gui: Boolean = false, list: Boolean = false, help: Boolean = false)
+
+  /** Usage text. */
+  val Usage: String =
+    """usage: examples/run [Scene] [--seconds S] [--out DIR]   simulate headless, write GIF, PNG and CSV
+      |       examples/run --gui [Scene]                      open the interactive viewer
+      |       examples/run --list                             list the scenes""".stripMargin
+
+  /** Parses the arguments; Left holds an error message. */
+  def parse(arguments: Seq[String]): Either[String, Options] =
+    def loop(rest: List[String], options: Options): Either[String, Options] = rest match
+      case Nil => Right(options)
+      case "--gui" :: tail => loop(tail, options.copy(gui = true))
+      case "--list" :: tail => loop(tail, options.copy(list = true))
+      case ("--help" | "-h") :: tail => loop(tail, options.copy(help = true))
+      case "--seconds" :: value :: tail =>
+        value.toDoubleOption.filter(s => s >= 0 && !s.isInfinite) match
+          case Some(seconds) => loop(tail, options.copy(seconds = seconds))
+          case None => Left(s"--seconds needs a number of seconds at least 0, got '$value'")
+      case "--out" :: value :: tail => loop(tail, options.copy(out = File(value)))
+      case ("--seconds" | "--out") :: Nil => Left(s"${rest.head} needs a value")
+      case flag :: _ if flag.startsWith("--") => Left(s"unknown option $flag")
+      case name :: tail =>
+        if options.scene.isDefined then Left(s"only one scene may be named, got ${options.scene.get} and $name")
+        else loop(tail, options.copy(scene = Some(name)))
+    loop(arguments.toList, Options())
+
+  /** The listing of all scenes, one per line. */
+  def listing: String =
+    val width = Scenes.all.map(_.name.length).max
+    Scenes.all.map(s => s"  ${s.name.padTo(width, ' ')}  ${s.description}").mkString("\n")
+
+  /** Runs the command line. */
+  def main(arguments: Array[String]): Unit =
+    parse(arguments.toSeq) match
+      case Left(error) =>
+        System.err.println(error)
+        System.err.println(Usage)
+        sys.exit(2)
+      case Right(options) if options.help =>
+        println(Usage)
+      case Right(options) if options.list =>
+        println(listing)
+      case Right(options) =>
+        val scene: Scene = options.scene match
+          case None => Scenes.default
+          case Some(name) =>
+            Scenes.find(name).getOrElse {
+              System.err.println(s"no scene named '$name'; the scenes are:\n$listing")
+              sys.exit(2)
+            }
+        if options.gui then viewer.Viewer.open(scene)
+        else
+          // No window is ever opened here: headless mode also works on machines without a display.
+          System.setProperty("java.awt.headless", "true")
+          if options.scene.isEmpty then
+            println(s"Scenes:\n$listing\n\nNo scene named, running ${scene.name} (see --help).\n")
+          HeadlessRun.run(scene, options.seconds, options.out)

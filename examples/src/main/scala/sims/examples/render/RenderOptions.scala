@@ -1,0 +1,11 @@
+package sims.examples.render
+
+/** What the [[Renderer]] draws besides bodies and joints: debugging overlays and a caption.
+  *
+  * @param contacts draw contact points and normals of the current collisions
+  * @param boxes    draw every shape's axis-aligned bounding box
+  * @param grid     draw the broadphase grid (cells of the detector's `gridSide`)
+  * @param caption  text written in the upper-left corner (nothing when empty)
+  */
+final case class RenderOptions(contacts: Boolean = false, boxes: Boolean = false, grid: Boolean = false,
+    caption: String = "")

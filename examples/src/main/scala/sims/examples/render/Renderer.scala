@@ -1,0 +1,175 @@
+package sims.examples.render
+
+import java.awt.{BasicStroke, Color, Font, Graphics2D, RenderingHints}
+import java.awt.geom.{Ellipse2D, Line2D, Path2D, Rectangle2D}
+import java.awt.image.BufferedImage
+import sims.collision.GridDetector
+import sims.dynamics.{Body, Circle, Shape, World}
+import sims.dynamics.joints.{DistanceJoint, Joint, SpringJoint}
+import sims.geometry.{ConvexPolygon, Vector2D}
+
+/** Draws a world onto a `Graphics2D` through a [[Viewport]]: bodies, joints and the overlays
+  * chosen in [[RenderOptions]]. The headless runs (GIF, PNG) and the viewer share it, so what
+  * the files show is what the window shows.
+  */
+object Renderer:
+  /** Colour of the empty background. */
+  val Background: Color = Color(0xf4f1ea)
+  /** Fill colour of fixed bodies (ground, walls). */
+  val FixedFill: Color = Color(0x7d7f85)
+  /** Fill colours of free bodies, chosen by the body's index in the world. */
+  val Palette: IndexedSeq[Color] =
+    IndexedSeq(0xe4572e, 0x29335c, 0xf3a712, 0x17bebb, 0x669bbc, 0xa8c686, 0xc44569, 0x6a4c93).map(Color(_))
+  /** Colour of joints. */
+  val JointColour: Color = Color(0x30343f)
+  /** Colour of contact points and normals. */
+  val ContactColour: Color = Color(0xd00000)
+  /** Colour of bounding boxes. */
+  val BoxColour: Color = Color(0x2a9d8f)
+  /** Colour of the broadphase grid. */
+  val GridColour: Color = Color(0xd8d3c4)
+  /** Below this many pixels per grid cell the grid is not drawn (it would fill the picture). */
+  private val MinimumCellPixels = 4.0
+
+  /** A new RGB picture of the world as seen through `viewport`. */
+  def image(world: World, viewport: Viewport, options: RenderOptions = RenderOptions()): BufferedImage =
+    val picture = BufferedImage(viewport.width, viewport.height, BufferedImage.TYPE_INT_RGB)
+    val g = picture.createGraphics()
+    try draw(g, world, viewport, options)
+    finally g.dispose()
+    picture
+
+  /** Draws the world over the whole viewport area of `g` (background first). */
+  def draw(g: Graphics2D, world: World, viewport: Viewport, options: RenderOptions = RenderOptions()): Unit =
+    g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON)
+    g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE)
+    g.setColor(Background)
+    g.fillRect(0, 0, viewport.width, viewport.height)
+    if options.grid then drawGrid(g, world, viewport)
+    val bodies = world.bodies
+    var i = 0
+    while i < bodies.length do
+      drawBody(g, bodies(i), i, viewport)
+      i += 1
+    world.joints.foreach(drawJoint(g, _, viewport))
+    if options.boxes then world.shapes.foreach(drawBox(g, _, viewport))
+    if options.contacts then drawContacts(g, world, viewport)
+    if options.caption.nonEmpty then drawCaption(g, options.caption)
+
+  /** Fill colour of the body at `index` in its world. */
+  def fillOf(body: Body, index: Int): Color = if body.fixed then FixedFill else Palette(index % Palette.length)
+
+  private def drawBody(g: Graphics2D, body: Body, index: Int, viewport: Viewport): Unit =
+    val fill = fillOf(body, index)
+    val outline = fill.darker()
+    body.shapes.foreach { shape =>
+      val outlinePath = shapePath(shape, viewport)
+      g.setColor(fill)
+      g.fill(outlinePath)
+      g.setColor(outline)
+      g.setStroke(BasicStroke(1f))
+      g.draw(outlinePath)
+      shape match
+        case circle: Circle =>
+          // A radius line shows how the circle turns.
+          val edge = circle.pos + Vector2D(circle.radius, 0).rotate(circle.rotation)
+          g.draw(line(circle.pos, edge, viewport))
+        case _ => ()
+    }
+
+  /** The outline of a shape in pixels: circles and convex polygons; any other shape type
+    * (a user's own) is shown by its bounding box.
+    */
+  private def shapePath(shape: Shape, viewport: Viewport): java.awt.Shape = shape match
+    case circle: Circle =>
+      val r = circle.radius * viewport.scale
+      Ellipse2D.Double(viewport.pixelX(circle.pos.x) - r, viewport.pixelY(circle.pos.y) - r, 2 * r, 2 * r)
+    case polygon: ConvexPolygon =>
+      val path = Path2D.Double()
+      val vertices = polygon.vertices
+      path.moveTo(viewport.pixelX(vertices(0).x), viewport.pixelY(vertices(0).y))
+      for v <- vertices.tail do path.lineTo(viewport.pixelX(v.x), viewport.pixelY(v.y))
+      path.closePath()
+      path
+    case other => boxPath(other, viewport)
+
+  private def boxPath(shape: Shape, viewport: Viewport): Rectangle2D =
+    val box = shape.AABB
+    val left = viewport.pixelX(box.minVertex.x)
+    val top = viewport.pixelY(box.maxVertex.y)
+    Rectangle2D.Double(left, top, viewport.pixelX(box.maxVertex.x) - left, viewport.pixelY(box.minVertex.y) - top)
+
+  private def line(from: Vector2D, to: Vector2D, viewport: Viewport): Line2D =
+    Line2D.Double(viewport.pixelX(from.x), viewport.pixelY(from.y), viewport.pixelX(to.x), viewport.pixelY(to.y))
+
+  private def drawJoint(g: Graphics2D, joint: Joint, viewport: Viewport): Unit =
+    g.setColor(JointColour)
+    joint match
+      case distance: DistanceJoint =>
+        g.setStroke(BasicStroke(1.5f))
+        g.draw(line(distance.connection1, distance.connection2, viewport))
+      case spring: SpringJoint =>
+        g.setStroke(BasicStroke(1f))
+        g.draw(zigzag(spring.connection1, spring.connection2, viewport))
+      case other =>
+        // Joints without a drawing of their own: a dashed line between the two bodies.
+        g.setStroke(BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, Array(4f, 4f), 0f))
+        g.draw(line(other.node1.pos, other.node2.pos, viewport))
+
+  /** A spring drawn as a zigzag of fixed pixel width between two points. */
+  private def zigzag(from: Vector2D, to: Vector2D, viewport: Viewport): Path2D =
+    val x1 = viewport.pixelX(from.x); val y1 = viewport.pixelY(from.y)
+    val x2 = viewport.pixelX(to.x); val y2 = viewport.pixelY(to.y)
+    val length = math.hypot(x2 - x1, y2 - y1)
+    val path = Path2D.Double()
+    path.moveTo(x1, y1)
+    if length > 0 then
+      val ux = (x2 - x1) / length; val uy = (y2 - y1) / length
+      val teeth = 12
+      val amplitude = 4.0
+      for k <- 1 until teeth do
+        val t = length * k / teeth
+        val side = if k % 2 == 0 then amplitude else -amplitude
+        path.lineTo(x1 + ux * t - uy * side, y1 + uy * t + ux * side)
+    path.lineTo(x2, y2)
+    path
+
+  private def drawBox(g: Graphics2D, shape: Shape, viewport: Viewport): Unit =
+    g.setColor(BoxColour)
+    g.setStroke(BasicStroke(1f))
+    g.draw(boxPath(shape, viewport))
+
+  private def drawContacts(g: Graphics2D, world: World, viewport: Viewport): Unit =
+    g.setStroke(BasicStroke(1.5f))
+    g.setColor(ContactColour)
+    val normalPixels = 14.0
+    for collision <- world.collisions do
+      val n = collision.normal
+      for p <- collision.points do
+        val px = viewport.pixelX(p.x); val py = viewport.pixelY(p.y)
+        g.fill(Ellipse2D.Double(px - 2.5, py - 2.5, 5, 5))
+        g.draw(Line2D.Double(px, py, px + n.x * normalPixels, py - n.y * normalPixels))
+
+  private def drawGrid(g: Graphics2D, world: World, viewport: Viewport): Unit =
+    world.detector match
+      case grid: GridDetector if grid.gridSide * viewport.scale >= MinimumCellPixels =>
+        val side = grid.gridSide
+        val visible = viewport.visible
+        g.setColor(GridColour)
+        g.setStroke(BasicStroke(1f))
+        var x = math.floor(visible.minX / side) * side
+        while x <= visible.maxX do
+          val px = viewport.pixelX(x)
+          g.draw(Line2D.Double(px, 0, px, viewport.height))
+          x += side
+        var y = math.floor(visible.minY / side) * side
+        while y <= visible.maxY do
+          val py = viewport.pixelY(y)
+          g.draw(Line2D.Double(0, py, viewport.width, py))
+          y += side
+      case _ => ()
+
+  private def drawCaption(g: Graphics2D, caption: String): Unit =
+    g.setFont(Font(Font.SANS_SERIF, Font.PLAIN, 13))
+    g.setColor(JointColour)
+    g.drawString(caption, 8, 18)

@@ -1,0 +1,112 @@
+package sims.examples.viewer
+
+import java.awt.{Dimension, Graphics, Graphics2D}
+import java.awt.event.{MouseAdapter, MouseEvent, MouseWheelEvent}
+import javax.swing.JPanel
+import sims.examples.render.{RenderOptions, Renderer, Viewport}
+import sims.examples.scenes.{Scene, Staged}
+
+/** The viewer's drawing area: owns the running scene, steps it on request and paints it with
+  * the shared [[Renderer]]. The mouse wheel zooms about the pointer, dragging pans the view.
+  * It needs no window, so tests paint it off-screen.
+  */
+final class SimulationPanel(initialScene: Scene) extends JPanel:
+  private var _scene = initialScene
+  private var _staged: Staged = initialScene.build()
+  private var _viewport: Viewport = Viewport.fit(initialScene.view, 800, 600)
+  private var lastStepNanos = 0L
+
+  /** Draw contact points and normals. */
+  var showContacts: Boolean = false
+  /** Draw bounding boxes. */
+  var showBoxes: Boolean = false
+  /** Draw the broadphase grid. */
+  var showGrid: Boolean = false
+
+  setPreferredSize(Dimension(800, 600))
+  installMouse()
+
+  /** The scene shown. */
+  def scene: Scene = _scene
+
+  /** The running world and action of the scene. */
+  def staged: Staged = _staged
+
+  /** The current view (sized to the panel when painted). */
+  def viewport: Viewport = _viewport
+
+  /** Replaces the scene with a fresh build of `newScene` and fits its view to the panel. */
+  def load(newScene: Scene): Unit =
+    _scene = newScene
+    _staged = newScene.build()
+    lastStepNanos = 0
+    _viewport = Viewport.fit(newScene.view, math.max(1, getWidth), math.max(1, getHeight))
+    repaint()
+
+  /** Rebuilds the current scene from scratch, keeping the view. */
+  def reset(): Unit =
+    _staged = _scene.build()
+    lastStepNanos = 0
+    repaint()
+
+  /** Advances the world by one step and measures it. */
+  def step(): Unit =
+    val start = System.nanoTime()
+    _staged.world.step()
+    lastStepNanos = System.nanoTime() - start
+    repaint()
+
+  /** Runs the scene's action, if it has one. */
+  def act(): Unit =
+    _staged.action.foreach(_.run())
+    repaint()
+
+  /** The text of the info panel: counts, time and the last step's duration. */
+  def info: String =
+    val world = _staged.world
+    val contacts = world.collisions.map(_.points.size).sum
+    s"""Scene:      ${_scene.name}
+       |Bodies:     ${world.bodies.length}
+       |Shapes:     ${world.shapes.length}
+       |Joints:     ${world.joints.length}
+       |Collisions: ${world.collisions.length}
+       |Contacts:   $contacts
+       |Time:       ${"%.3f".format(world.time)} s
+       |Step time:  ${"%.3f".format(lastStepNanos / 1e6)} ms
+       |Zoom:       ${"%.1f".format(_viewport.scale)} px/m""".stripMargin
+
+  /** Options for the renderer from the toggles. */
+  def renderOptions: RenderOptions =
+    RenderOptions(contacts = showContacts, boxes = showBoxes, grid = showGrid,
+      caption = f"${_scene.name}  t = ${_staged.world.time}%.2f s")
+
+  override def paintComponent(graphics: Graphics): Unit =
+    super.paintComponent(graphics)
+    val width = math.max(1, getWidth)
+    val height = math.max(1, getHeight)
+    if _viewport.width != width || _viewport.height != height then _viewport = _viewport.resized(width, height)
+    Renderer.draw(graphics.asInstanceOf[Graphics2D], _staged.world, _viewport, renderOptions)
+
+  /** Zooms by `factor` about pixel (x, y). */
+  def zoom(factor: Double, x: Double, y: Double): Unit =
+    _viewport = _viewport.zoomed(factor, x, y)
+    repaint()
+
+  /** Moves the view by (dx, dy) pixels. */
+  def pan(dx: Double, dy: Double): Unit =
+    _viewport = _viewport.panned(dx, dy)
+    repaint()
+
+  private def installMouse(): Unit =
+    val handler = new MouseAdapter:
+      private var lastX, lastY = 0
+      override def mousePressed(e: MouseEvent): Unit =
+        lastX = e.getX; lastY = e.getY
+      override def mouseDragged(e: MouseEvent): Unit =
+        pan(e.getX - lastX, e.getY - lastY)
+        lastX = e.getX; lastY = e.getY
+      override def mouseWheelMoved(e: MouseWheelEvent): Unit =
+        zoom(math.pow(1.15, -e.getPreciseWheelRotation), e.getX, e.getY)
+    addMouseListener(handler)
+    addMouseMotionListener(handler)
+    addMouseWheelListener(handler)

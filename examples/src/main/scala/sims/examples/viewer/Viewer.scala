@@ -1,0 +1,97 @@
+package sims.examples.viewer
+
+import java.awt.{BorderLayout, Font}
+import java.awt.event.ActionEvent
+import javax.swing.{BorderFactory, BoxLayout, JButton, JCheckBox, JComboBox, JFrame, JPanel, JTextArea, SwingUtilities, Timer, WindowConstants}
+import sims.examples.scenes.{Scene, Scenes}
+
+/** The interactive viewer: a scene chooser, start / stop / step / reset, the scene's action,
+  * overlay toggles and an info panel around a [[SimulationPanel]].
+  */
+final class ViewerControls(initialScene: Scene) extends JPanel(BorderLayout()):
+  /** The drawing area. */
+  val simulation: SimulationPanel = SimulationPanel(initialScene)
+  private var running = false
+  private val chooser = JComboBox[String](Scenes.all.map(_.name).toArray)
+  private val startStop = JButton("Start")
+  private val stepButton = JButton("Step")
+  private val resetButton = JButton("Reset")
+  private val actionButton = JButton("Action")
+  private val contacts = JCheckBox("Contacts")
+  private val boxes = JCheckBox("AABBs")
+  private val grid = JCheckBox("Grid")
+  private val infoText = JTextArea(10, 22)
+  /** Steps and repaints at the world's own rate while running; refreshes the info always. */
+  private val timer = Timer(math.max(1, math.round(1000 * simulation.staged.world.timeStep).toInt), (_: ActionEvent) => tick())
+
+  chooser.setSelectedItem(initialScene.name)
+  chooser.addActionListener(_ => Scenes.find(chooser.getSelectedItem.toString).foreach(select))
+  startStop.addActionListener(_ => setRunning(!running))
+  stepButton.addActionListener(_ => { setRunning(false); simulation.step(); refreshInfo() })
+  resetButton.addActionListener(_ => { simulation.reset(); refreshInfo() })
+  actionButton.addActionListener(_ => simulation.act())
+  contacts.addActionListener(_ => { simulation.showContacts = contacts.isSelected; simulation.repaint() })
+  boxes.addActionListener(_ => { simulation.showBoxes = boxes.isSelected; simulation.repaint() })
+  grid.addActionListener(_ => { simulation.showGrid = grid.isSelected; simulation.repaint() })
+  infoText.setEditable(false)
+  infoText.setFont(Font(Font.MONOSPACED, Font.PLAIN, 12))
+
+  private val toolbar = JPanel()
+  Seq(chooser, startStop, stepButton, resetButton, actionButton, contacts, boxes, grid).foreach(toolbar.add(_))
+  private val side = JPanel()
+  side.setLayout(BoxLayout(side, BoxLayout.Y_AXIS))
+  side.setBorder(BorderFactory.createTitledBorder("Info"))
+  side.add(infoText)
+  add(toolbar, BorderLayout.NORTH)
+  add(simulation, BorderLayout.CENTER)
+  add(side, BorderLayout.EAST)
+  updateActionButton()
+  refreshInfo()
+
+  /** Whether the simulation is advancing. */
+  def isRunning: Boolean = running
+
+  /** Starts or stops the simulation. */
+  def setRunning(value: Boolean): Unit =
+    running = value
+    startStop.setText(if running then "Stop" else "Start")
+
+  /** Starts the timer (call once the panel is shown). */
+  def startTimer(): Unit = timer.start()
+
+  /** Stops the timer. */
+  def stopTimer(): Unit = timer.stop()
+
+  /** The info panel's current text. */
+  def infoShown: String = infoText.getText
+
+  private def select(scene: Scene): Unit =
+    simulation.load(scene)
+    updateActionButton()
+    refreshInfo()
+
+  private def updateActionButton(): Unit =
+    val action = simulation.staged.action
+    actionButton.setEnabled(action.isDefined)
+    actionButton.setText(action.map(_.label).getOrElse("Action"))
+
+  private def tick(): Unit =
+    if running then simulation.step()
+    refreshInfo()
+
+  private def refreshInfo(): Unit = infoText.setText(simulation.info)
+
+/** Opens the viewer window. */
+object Viewer:
+  /** Shows the viewer on `scene` in a new window (needs a display). */
+  def open(scene: Scene): Unit =
+    SwingUtilities.invokeLater { () =>
+      val controls = ViewerControls(scene)
+      val frame = JFrame("SiMS examples")
+      frame.setDefaultCloseOperation(WindowConstants.EXIT_ON_CLOSE)
+      frame.setContentPane(controls)
+      frame.pack()
+      frame.setLocationRelativeTo(null)
+      frame.setVisible(true)
+      controls.startTimer()
+    }
