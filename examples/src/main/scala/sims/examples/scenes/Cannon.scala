@@ -15,7 +15,7 @@ object Cannon extends Scene:
   def name: String = "Cannon"
   def description: String = "A ball fired into a pyramid of circles (action: fire again)."
   def view: Region = Region(-10, -0.5, 8, 8)
-  override def region: Region = Region(-11, -0.2, 25, 10)
+  override def region: Region = Region(-11, -0.2, 30, 10)
 
   /** Adds a heavy ball at the muzzle moving at the muzzle velocity. */
   def fire(world: World): Unit =
@@ -24,7 +24,7 @@ object Cannon extends Scene:
     world += ball
 
   def build(): Staged =
-    val world = Scene.worldOf(Scene.ground(12, centreX = 6))
+    val world = Scene.worldOf(Scene.ground(21, centreX = 9))
     for row <- 0 until Rows; i <- 0 until Rows - row do
       val x = 3 + (i - (Rows - row - 1) / 2.0) * 2 * Radius
       // Rows rest in the hollows of the row below: a circle pyramid, not a column stack.

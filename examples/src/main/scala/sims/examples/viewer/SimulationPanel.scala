@@ -15,6 +15,8 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
   private var _staged: Staged = initialScene.build()
   private var _viewport: Viewport = Viewport.fit(initialScene.view, 800, 600)
   private var lastStepNanos = 0L
+  // Until the user zooms or pans, the view keeps showing the scene's whole view at any panel size.
+  private var viewMoved = false
 
   /** Draw contact points and normals. */
   var showContacts: Boolean = false
@@ -40,6 +42,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
     _scene = newScene
     _staged = newScene.build()
     lastStepNanos = 0
+    viewMoved = false
     _viewport = Viewport.fit(newScene.view, math.max(1, getWidth), math.max(1, getHeight))
     repaint()
 
@@ -84,17 +87,20 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
     super.paintComponent(graphics)
     val width = math.max(1, getWidth)
     val height = math.max(1, getHeight)
-    if _viewport.width != width || _viewport.height != height then _viewport = _viewport.resized(width, height)
+    if _viewport.width != width || _viewport.height != height then
+      _viewport = if viewMoved then _viewport.resized(width, height) else Viewport.fit(_scene.view, width, height)
     Renderer.draw(graphics.asInstanceOf[Graphics2D], _staged.world, _viewport, renderOptions)
 
   /** Zooms by `factor` about pixel (x, y). */
   def zoom(factor: Double, x: Double, y: Double): Unit =
     _viewport = _viewport.zoomed(factor, x, y)
+    viewMoved = true
     repaint()
 
   /** Moves the view by (dx, dy) pixels. */
   def pan(dx: Double, dy: Double): Unit =
     _viewport = _viewport.panned(dx, dy)
+    viewMoved = true
     repaint()
 
   private def installMouse(): Unit =

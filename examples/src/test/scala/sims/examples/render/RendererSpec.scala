@@ -1,0 +1,70 @@
+package sims.examples.render
+
+import java.awt.Color
+import java.awt.image.BufferedImage
+import org.scalatest.funsuite.AnyFunSuite
+import sims.dynamics.World
+import sims.examples.scenes.{Region, Scene}
+import sims.geometry.Vector2D
+
+/** The renderer draws a known scene; pixels are checked where things are and where they are not. */
+class RendererSpec extends AnyFunSuite:
+  /** A 10 m x 10 m view at 20 px/m: ground from y = -1 to 0, a ball of radius 1 at (2, 3). */
+  private def knownWorld(): World =
+    val world = World()
+    world += Scene.ground(5)
+    world += Scene.ball(Vector2D(2, 3), 1)
+    world
+  private val viewport = Viewport.fit(Region(-5, -5, 5, 5), 200, 200)
+
+  private def colourAt(image: BufferedImage, x: Double, y: Double): Color =
+    Color(image.getRGB(viewport.pixelX(x).toInt, viewport.pixelY(y).toInt))
+
+  test("ground, ball and background are where they should be"):
+    val image = Renderer.image(knownWorld(), viewport)
+    assert(image.getWidth == 200 && image.getHeight == 200)
+    assert(colourAt(image, 0, -0.5) == Renderer.FixedFill, "inside the ground")
+    assert(colourAt(image, -4, -0.6) == Renderer.FixedFill, "inside the ground, left")
+    assert(colourAt(image, 2.3, 3.4) == Renderer.Palette(1), "inside the ball (body 1), off its radius line")
+    for (x, y) <- Seq((-4.0, 4.0), (0.0, 2.0), (4.0, 1.0), (0.0, -3.0), (-2.0, 3.0)) do
+      assert(colourAt(image, x, y) == Renderer.Background, s"background at ($x, $y)")
+
+  test("the picture follows the bodies"):
+    val world = knownWorld()
+    world.bodies(1).pos = Vector2D(-2, 3)
+    val image = Renderer.image(world, viewport)
+    assert(colourAt(image, -1.7, 3.4) == Renderer.Palette(1))
+    assert(colourAt(image, 2.3, 3.4) == Renderer.Background)
+
+  test("the grid is drawn on its lines only when asked"):
+    val world = knownWorld()
+    // x = 4 is a multiple of the grid side 2; (4, 3) is empty space.
+    val plain = Renderer.image(world, viewport)
+    val gridded = Renderer.image(world, viewport, RenderOptions(grid = true))
+    assert(colourAt(plain, 4, 3) == Renderer.Background)
+    assert(colourAt(gridded, 4, 3) != Renderer.Background)
+    assert(colourAt(gridded, 3, 1) == Renderer.Background, "between grid lines")
+
+  test("contacts are drawn where the ball touches the ground"):
+    val world = World()
+    world += Scene.ground(5)
+    world += Scene.ball(Vector2D(0, 0.98), 1)
+    world.step()
+    assert(world.collisions.nonEmpty)
+    val contact = world.collisions.head.points.head
+    val image = Renderer.image(world, viewport, RenderOptions(contacts = true))
+    assert(colourAt(image, contact.x, contact.y) == Renderer.ContactColour)
+
+  test("bounding boxes are drawn when asked"):
+    val world = knownWorld()
+    // The ball's box has corners at (1, 2) and (3, 4); its left side passes (1, 3.5).
+    val image = Renderer.image(world, viewport, RenderOptions(boxes = true))
+    val onBox = colourAt(image, 1, 3.5)
+    assert(onBox != Renderer.Background && colourAt(Renderer.image(world, viewport), 1, 3.5) == Renderer.Background)
+
+  test("every scene renders without error at its own view"):
+    for scene <- sims.examples.scenes.Scenes.all do
+      val world = scene.build().world
+      val image = Renderer.image(world, Viewport.fit(scene.view, 160, 120),
+        RenderOptions(contacts = true, boxes = true, grid = true, caption = scene.name))
+      assert(image.getWidth == 160, scene.name)

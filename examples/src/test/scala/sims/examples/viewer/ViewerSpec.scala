@@ -1,0 +1,61 @@
+package sims.examples.viewer
+
+import java.awt.Color
+import java.awt.image.BufferedImage
+import org.scalatest.funsuite.AnyFunSuite
+import sims.examples.render.Renderer
+import sims.examples.scenes.{BallStack, Cannon, Scenes}
+
+/** The viewer's panels work without a display: they paint off-screen and respond to controls. */
+class ViewerSpec extends AnyFunSuite:
+  test("the tests run headless"):
+    assert(java.awt.GraphicsEnvironment.isHeadless)
+
+  test("the simulation panel paints a frame off-screen"):
+    val panel = SimulationPanel(BallStack)
+    panel.setSize(400, 300)
+    val image = BufferedImage(400, 300, BufferedImage.TYPE_INT_RGB)
+    val g = image.createGraphics()
+    panel.paint(g)
+    g.dispose()
+    assert(panel.viewport.width == 400 && panel.viewport.height == 300)
+    // The upper corner is empty sky, the bottom middle is the ground.
+    assert(Color(image.getRGB(5, 40)) == Renderer.Background)
+    val ground = panel.viewport
+    assert(Color(image.getRGB(ground.pixelX(0).toInt, ground.pixelY(-0.5).toInt)) == Renderer.FixedFill)
+
+  test("the whole viewer, with controls and every overlay, paints off-screen"):
+    val controls = ViewerControls(Cannon)
+    controls.setSize(1000, 700)
+    controls.doLayout()
+    controls.simulation.showContacts = true
+    controls.simulation.showBoxes = true
+    controls.simulation.showGrid = true
+    controls.simulation.setSize(700, 600)
+    val image = BufferedImage(1000, 700, BufferedImage.TYPE_INT_RGB)
+    val g = image.createGraphics()
+    controls.paint(g)
+    g.dispose()
+    assert(controls.infoShown.contains("Bodies:"))
+
+  test("step, action, reset and scene change"):
+    val panel = SimulationPanel(Cannon)
+    val bodies = panel.staged.world.bodies.size
+    panel.step()
+    assert(panel.staged.world.time > 0)
+    assert(panel.info.contains(s"Bodies:     $bodies"))
+    panel.act()
+    assert(panel.staged.world.bodies.size == bodies + 1, "the cannon fired another ball")
+    panel.reset()
+    assert(panel.staged.world.time == 0 && panel.staged.world.bodies.size == bodies)
+    panel.load(Scenes.all.last)
+    assert(panel.scene == Scenes.all.last)
+
+  test("zoom and pan change the view"):
+    val panel = SimulationPanel(BallStack)
+    val scale = panel.viewport.scale
+    panel.zoom(2, 10, 10)
+    assert(panel.viewport.scale == 2 * scale)
+    val centre = panel.viewport.centre
+    panel.pan(50, 0)
+    assert(panel.viewport.centre.x < centre.x)
