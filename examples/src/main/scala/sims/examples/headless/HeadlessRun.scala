@@ -44,19 +44,21 @@ object HeadlessRun:
     out.println(s"${world.bodies.length} bodies, ${world.shapes.length} shapes, ${world.joints.length} joints; " +
       f"$seconds%.2f s = $totalSteps steps")
     val bar = ProgressBar(seconds, out, interactive)
-    def picture() = Renderer.image(world, viewport, RenderOptions(caption = f"${scene.name}  t = ${world.time}%.2f s"))
+    def picture(smooth: Boolean) =
+      Renderer.image(world, viewport, RenderOptions(caption = f"${scene.name}  t = ${world.time}%.2f s", smooth = smooth))
     var steps = 0L
     var stepNanos = 0L
     var nextFrame = 0
     var nextSample = 0
     val csv = TrajectoryCsv(csvFile)
-    val gif = GifWriter(gifFile, 1000 / FramesPerSecond)
+    // GIF frames are drawn in the renderer's own colours only, so they stay exact and small.
+    val gif = GifWriter(gifFile, 1000 / FramesPerSecond, Renderer.colours)
     try
       // Frames and samples are taken when the simulated time reaches their due time.
       def record(): Unit =
         val epsilon = world.timeStep / 2
         while nextFrame.toDouble / FramesPerSecond <= world.time + epsilon do
-          gif.write(picture())
+          gif.write(picture(smooth = false))
           nextFrame += 1
         while nextSample.toDouble / SamplesPerSecond <= world.time + epsilon do
           csv.sample(world)
@@ -74,7 +76,7 @@ object HeadlessRun:
     finally
       gif.close()
       csv.close()
-    ImageIO.write(picture(), "png", pngFile)
+    ImageIO.write(picture(smooth = true), "png", pngFile)
     val result = Result(gifFile, pngFile, csvFile, steps, stepNanos, gif.frames, csv.rowCount)
     out.println(f"${result.stepsPerSecond}%.0f steps/s, ${result.millisPerStep}%.3f ms/step; wrote ${gifFile.getPath} " +
       s"(${result.frames} frames), ${pngFile.getPath}, ${csvFile.getPath} (${result.rows} rows)")

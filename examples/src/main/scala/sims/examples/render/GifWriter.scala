@@ -1,6 +1,8 @@
 package sims.examples.render
 
-import java.awt.image.BufferedImage
+import java.awt.Color
+import java.awt.image.{BufferedImage, DataBuffer, IndexColorModel}
+import scala.collection.mutable
 import java.io.File
 import javax.imageio.{IIOImage, ImageIO, ImageTypeSpecifier}
 import javax.imageio.metadata.{IIOMetadata, IIOMetadataNode}
@@ -10,8 +12,13 @@ import javax.imageio.stream.ImageOutputStream
   *
   * @param file             the file to write (replaced)
   * @param frameDelayMillis time each frame is shown; GIF stores hundredths of a second
+  * @param palette          if not empty (at most 256 colours), every pixel is stored as the
+  *                         nearest of these colours: pictures drawn in exactly these colours
+  *                         stay exact and compress far better than the JDK's own per-frame
+  *                         colour reduction
   */
-final class GifWriter(file: File, frameDelayMillis: Int) extends AutoCloseable:
+final class GifWriter(file: File, frameDelayMillis: Int, palette: Seq[Color] = Nil) extends AutoCloseable:
+  require(palette.size <= 256, s"a GIF palette has at most 256 colours, got ${palette.size}")
   private val writer =
     val writers = ImageIO.getImageWritersByFormatName("gif")
     if !writers.hasNext then throw IllegalStateException("this JDK has no GIF writer")
@@ -27,8 +34,9 @@ final class GifWriter(file: File, frameDelayMillis: Int) extends AutoCloseable:
 
   /** Appends one frame. */
   def write(frame: BufferedImage): Unit =
-    val metadata = frameMetadata(frame)
-    writer.writeToSequence(IIOImage(frame, null, metadata), null)
+    val stored = if palette.isEmpty then frame else indexed(frame)
+    val metadata = frameMetadata(stored)
+    writer.writeToSequence(IIOImage(stored, null, metadata), null)
     count += 1
 
   /** Finishes the file. */
@@ -38,6 +46,33 @@ final class GifWriter(file: File, frameDelayMillis: Int) extends AutoCloseable:
     finally
       output.close()
       writer.dispose()
+
+  private lazy val colourModel: IndexColorModel =
+    // GIF colour tables have a power-of-two size; unused entries repeat the first colour.
+    val size = Iterator.iterate(2)(_ * 2).find(_ >= palette.size).get
+    val rgb = Array.tabulate(size)(i => palette(if i < palette.size then i else 0).getRGB)
+    IndexColorModel(8, size, rgb, 0, false, -1, DataBuffer.TYPE_BYTE)
+  private val nearestOf = mutable.HashMap.empty[Int, Byte]
+
+  /** The frame with every pixel replaced by the index of the nearest palette colour. */
+  private def indexed(frame: BufferedImage): BufferedImage =
+    val result = BufferedImage(frame.getWidth, frame.getHeight, BufferedImage.TYPE_BYTE_INDEXED, colourModel)
+    val raster = result.getRaster
+    val row = new Array[Int](frame.getWidth)
+    val indices = new Array[Int](frame.getWidth)
+    for y <- 0 until frame.getHeight do
+      frame.getRGB(0, y, frame.getWidth, 1, row, 0, frame.getWidth)
+      for x <- row.indices do indices(x) = nearestOf.getOrElseUpdate(row(x) & 0xffffff, nearest(row(x))) & 0xff
+      raster.setPixels(0, y, frame.getWidth, 1, indices)
+    result
+
+  private def nearest(rgb: Int): Byte =
+    def distance(c: Color): Int =
+      val dr = c.getRed - ((rgb >> 16) & 0xff)
+      val dg = c.getGreen - ((rgb >> 8) & 0xff)
+      val db = c.getBlue - (rgb & 0xff)
+      dr * dr + dg * dg + db * db
+    palette.indices.minBy(i => distance(palette(i))).toByte
 
   /** Metadata of one frame: its delay and, on the first frame, the loop-forever extension. */
   private def frameMetadata(frame: BufferedImage): IIOMetadata =
@@ -50,6 +85,21 @@ final class GifWriter(file: File, frameDelayMillis: Int) extends AutoCloseable:
     control.setAttribute("transparentColorFlag", "FALSE")
     control.setAttribute("delayTime", math.max(1, math.round(frameDelayMillis / 10.0).toInt).toString)
     control.setAttribute("transparentColorIndex", "0")
+    frame.getColorModel match
+      case model: IndexColorModel =>
+        // The writer does not take the colour table from the image by itself: state it.
+        val table = child(root, "LocalColorTable")
+        table.setAttribute("sizeOfLocalColorTable", model.getMapSize.toString)
+        table.setAttribute("sortFlag", "FALSE")
+        while table.getLength > 0 do table.removeChild(table.getFirstChild)
+        for i <- 0 until model.getMapSize do
+          val entry = IIOMetadataNode("ColorTableEntry")
+          entry.setAttribute("index", i.toString)
+          entry.setAttribute("red", model.getRed(i).toString)
+          entry.setAttribute("green", model.getGreen(i).toString)
+          entry.setAttribute("blue", model.getBlue(i).toString)
+          table.appendChild(entry)
+      case _ => ()
     if count == 0 then
       val extensions = child(root, "ApplicationExtensions")
       val loop = IIOMetadataNode("ApplicationExtension")

@@ -6,6 +6,8 @@ package sims.examples.render
   * @param boxes    draw every shape's axis-aligned bounding box
   * @param grid     draw the broadphase grid (cells of the detector's `gridSide`)
   * @param caption  text written in the upper-left corner (nothing when empty)
+  * @param smooth   antialiased edges; off, the picture uses only [[Renderer.colours]], which
+  *                 keeps GIF frames small
   */
 final case class RenderOptions(contacts: Boolean = false, boxes: Boolean = false, grid: Boolean = false,
-    caption: String = "")
+    caption: String = "", smooth: Boolean = true)

@@ -28,6 +28,11 @@ object Renderer:
   val BoxColour: Color = Color(0x2a9d8f)
   /** Colour of the broadphase grid. */
   val GridColour: Color = Color(0xd8d3c4)
+  /** Every colour drawn without smoothing: the palette of the GIF frames. */
+  val colours: IndexedSeq[Color] =
+    (IndexedSeq(Background, FixedFill, FixedFill.darker(), JointColour, ContactColour, BoxColour, GridColour) ++
+      Palette ++ Palette.map(_.darker())).distinct
+
   /** Below this many pixels per grid cell the grid is not drawn (it would fill the picture). */
   private val MinimumCellPixels = 4.0
 
@@ -41,8 +46,12 @@ object Renderer:
 
   /** Draws the world over the whole viewport area of `g` (background first). */
   def draw(g: Graphics2D, world: World, viewport: Viewport, options: RenderOptions = RenderOptions()): Unit =
-    g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON)
-    g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE)
+    if options.smooth then
+      g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON)
+      g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE)
+    else
+      g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_OFF)
+      g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_OFF)
     g.setColor(Background)
     g.fillRect(0, 0, viewport.width, viewport.height)
     if options.grid then drawGrid(g, world, viewport)

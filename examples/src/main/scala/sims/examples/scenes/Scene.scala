@@ -64,6 +64,12 @@ object Scene:
   def ground(halfWidth: Double, centreX: Double = 0): Body =
     fixedBox(Vector2D(centreX, -0.5), halfWidth, 0.5)
 
+  /** A fixed plank of thickness 2 `halfThickness` whose top face runs from `from` to `to`. */
+  def ramp(from: Vector2D, to: Vector2D, halfThickness: Double = 0.25): Body =
+    val along = (to - from).unit
+    val centre = (from + to) / 2 - along.leftNormal * halfThickness
+    fixedBox(centre, (to - from).length / 2, halfThickness, math.atan2(along.y, along.x))
+
   /** A free circle body of the given radius and density centred at `centre`. */
   def ball(centre: Vector2D, radius: Double, density: Double = 1): Body =
     val circle = sims.dynamics.Circle(radius, density)

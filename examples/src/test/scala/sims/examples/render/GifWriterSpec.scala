@@ -39,3 +39,15 @@ class GifWriterSpec extends AnyFunSuite:
     finally
       input.close()
       reader.dispose()
+
+  test("with a palette, the renderer's unsmoothed pictures are stored exactly"):
+    val file = Files.createTempFile("sims-gif", ".gif").toFile
+    file.deleteOnExit()
+    val scene = sims.examples.scenes.BallStack
+    val world = scene.build().world
+    val picture = Renderer.image(world, Viewport.fit(scene.view, 120, 90), RenderOptions(smooth = false, caption = "x"))
+    val gif = GifWriter(file, 40, Renderer.colours)
+    gif.write(picture)
+    gif.close()
+    val back = ImageIO.read(file)
+    for x <- 0 until 120; y <- 0 until 90 do assert(back.getRGB(x, y) == picture.getRGB(x, y), s"pixel ($x, $y)")
