@@ -5,7 +5,7 @@ import java.awt.geom.{Ellipse2D, Line2D, Path2D, Rectangle2D}
 import java.awt.image.BufferedImage
 import sims.collision.GridDetector
 import sims.dynamics.{Body, Circle, Shape, World}
-import sims.dynamics.joints.{DistanceJoint, Joint, SpringJoint}
+import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.geometry.{ConvexPolygon, Vector2D}
 
 /** Draws a world onto a `Graphics2D` through a [[Viewport]]: bodies, joints and the overlays
@@ -22,7 +22,9 @@ object Renderer:
     IndexedSeq(0xe4572e, 0x29335c, 0xf3a712, 0x17bebb, 0x669bbc, 0xa8c686, 0xc44569, 0x6a4c93).map(Color(_))
   /** Colour of joints. */
   val JointColour: Color = Color(0x30343f)
-  /** Colour of contact points and normals. */
+  /** Colour of prismatic joints' rails. */
+  val RailColour: Color = Color(0xb0aa98)
+  /** Colour of contact points and normals (and of the mouse's pull). */
   val ContactColour: Color = Color(0xd00000)
   /** Colour of bounding boxes. */
   val BoxColour: Color = Color(0x2a9d8f)
@@ -30,7 +32,7 @@ object Renderer:
   val GridColour: Color = Color(0xd8d3c4)
   /** Every colour drawn without smoothing: the palette of the GIF frames. */
   val colours: IndexedSeq[Color] =
-    (IndexedSeq(Background, FixedFill, FixedFill.darker(), JointColour, ContactColour, BoxColour, GridColour) ++
+    (IndexedSeq(Background, FixedFill, FixedFill.darker(), JointColour, RailColour, ContactColour, BoxColour, GridColour) ++
       Palette ++ Palette.map(_.darker())).distinct
 
   /** Below this many pixels per grid cell the grid is not drawn (it would fill the picture). */
@@ -120,6 +122,23 @@ object Renderer:
       case spring: SpringJoint =>
         g.setStroke(BasicStroke(1f))
         g.draw(zigzag(spring.connection1, spring.connection2, viewport))
+      case revolute: RevoluteJoint =>
+        g.setStroke(BasicStroke(1.5f))
+        val p = revolute.connection1
+        val r = 3.5
+        g.draw(Ellipse2D.Double(viewport.pixelX(p.x) - r, viewport.pixelY(p.y) - r, 2 * r, 2 * r))
+      case prismatic: PrismaticJoint =>
+        // The rail: from the anchor on node1 along the axis to the slider on node2.
+        g.setStroke(BasicStroke(1f))
+        g.setColor(RailColour)
+        g.draw(line(prismatic.connection1, prismatic.connection2, viewport))
+        val p = prismatic.connection2
+        g.setColor(JointColour)
+        g.draw(Rectangle2D.Double(viewport.pixelX(p.x) - 3, viewport.pixelY(p.y) - 3, 6, 6))
+      case mouse: MouseJoint =>
+        g.setStroke(BasicStroke(1.5f))
+        g.setColor(ContactColour)
+        g.draw(line(mouse.connection, mouse.target, viewport))
       case other =>
         // Joints without a drawing of their own: a dashed line between the two bodies.
         g.setStroke(BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, Array(4f, 4f), 0f))
@@ -134,8 +153,9 @@ object Renderer:
     path.moveTo(x1, y1)
     if length > 0 then
       val ux = (x2 - x1) / length; val uy = (y2 - y1) / length
-      val teeth = 12
-      val amplitude = 4.0
+      // About one tooth per 6 pixels, so short springs stay readable.
+      val teeth = math.max(4, math.min(12, (length / 6).toInt))
+      val amplitude = 3.0
       for k <- 1 until teeth do
         val t = length * k / teeth
         val side = if k % 2 == 0 then amplitude else -amplitude

@@ -4,7 +4,7 @@ package sims.examples.scenes
 object Scenes:
   /** Every scene, in the order the viewer and the listing show them. */
   val all: IndexedSeq[Scene] = IndexedSeq(
-    BallStack, Chain, Stacking, Restitution, Friction, Spring, NetScene, Cup, Carriage,
+    BallStack, Chain, Stacking, Restitution, Friction, Spring, NetScene, Cup, Carriage, Wave,
     Atom, Cannon, PylonScene, CompositeShape, Pyramid, Pile, NewtonsCradle, Dominoes)
 
   /** The scene run when none is named. */

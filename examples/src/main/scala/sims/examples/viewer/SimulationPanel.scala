@@ -4,11 +4,13 @@ import java.awt.{Dimension, Graphics, Graphics2D}
 import java.awt.event.{MouseAdapter, MouseEvent, MouseWheelEvent}
 import javax.swing.JPanel
 import sims.examples.render.{RenderOptions, Renderer, Viewport}
+import sims.dynamics.joints.MouseJoint
 import sims.examples.scenes.{Scene, Staged}
 
 /** The viewer's drawing area: owns the running scene, steps it on request and paints it with
-  * the shared [[Renderer]]. The mouse wheel zooms about the pointer, dragging pans the view.
-  * It needs no window, so tests paint it off-screen.
+  * the shared [[Renderer]]. Dragging a free body pulls it with a [[MouseJoint]]; dragging
+  * empty space pans the view; the mouse wheel zooms about the pointer. It needs no window, so
+  * tests paint it off-screen.
   */
 final class SimulationPanel(initialScene: Scene) extends JPanel:
   private var _scene = initialScene
@@ -17,6 +19,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
   private var lastStepNanos = 0L
   // Until the user zooms or pans, the view keeps showing the scene's whole view at any panel size.
   private var viewMoved = false
+  private var dragJoint: Option[MouseJoint] = None
 
   /** Draw contact points and normals. */
   var showContacts: Boolean = false
@@ -39,6 +42,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
 
   /** Replaces the scene with a fresh build of `newScene` and fits its view to the panel. */
   def load(newScene: Scene): Unit =
+    dragJoint = None
     _scene = newScene
     _staged = newScene.build()
     lastStepNanos = 0
@@ -48,6 +52,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
 
   /** Rebuilds the current scene from scratch, keeping the view. */
   def reset(): Unit =
+    dragJoint = None
     _staged = _scene.build()
     lastStepNanos = 0
     repaint()
@@ -103,16 +108,55 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
     viewMoved = true
     repaint()
 
+  /** The body being dragged, if any. */
+  def dragged: Option[sims.dynamics.Body] = dragJoint.map(_.node2)
+
+  /** Starts dragging the free body under pixel (x, y), if there is one: a mouse joint pulls
+    * the grabbed point towards the pointer with a force of at most [[SimulationPanel.DragForcePerKilogram]]
+    * times the body's mass. Returns whether a body was grabbed.
+    */
+  def grab(x: Double, y: Double): Boolean =
+    release()
+    val point = _viewport.toWorld(x, y)
+    val world = _staged.world
+    world.bodies.reverseIterator.find(b => !b.fixed && b.contains(point)) match
+      case Some(body) =>
+        val joint = MouseJoint(body, point, SimulationPanel.DragForcePerKilogram * body.mass)
+        world += joint
+        dragJoint = Some(joint)
+        true
+      case None => false
+
+  /** Moves the dragged body's target to pixel (x, y). */
+  def dragTo(x: Double, y: Double): Unit =
+    dragJoint.foreach(_.target = _viewport.toWorld(x, y))
+    repaint()
+
+  /** Lets go of the dragged body. */
+  def release(): Unit =
+    dragJoint.foreach(_staged.world -= _)
+    dragJoint = None
+    repaint()
+
   private def installMouse(): Unit =
     val handler = new MouseAdapter:
       private var lastX, lastY = 0
+      private var panning = false
       override def mousePressed(e: MouseEvent): Unit =
         lastX = e.getX; lastY = e.getY
+        panning = !(javax.swing.SwingUtilities.isLeftMouseButton(e) && grab(e.getX, e.getY))
+      override def mouseReleased(e: MouseEvent): Unit = release()
       override def mouseDragged(e: MouseEvent): Unit =
-        pan(e.getX - lastX, e.getY - lastY)
+        if panning then pan(e.getX - lastX, e.getY - lastY)
+        else dragTo(e.getX, e.getY)
         lastX = e.getX; lastY = e.getY
       override def mouseWheelMoved(e: MouseWheelEvent): Unit =
         zoom(math.pow(1.15, -e.getPreciseWheelRotation), e.getX, e.getY)
     addMouseListener(handler)
     addMouseMotionListener(handler)
     addMouseWheelListener(handler)
+
+/** Settings of the viewer's drawing area. */
+object SimulationPanel:
+  /** Bound of the dragging force per kilogram of the dragged body, N/kg (50 g). */
+  val DragForcePerKilogram: Double = 50 * 9.81

@@ -59,3 +59,23 @@ class ViewerSpec extends AnyFunSuite:
     val centre = panel.viewport.centre
     panel.pan(50, 0)
     assert(panel.viewport.centre.x < centre.x)
+
+  test("dragging a body with the mouse lifts it; empty space grabs nothing"):
+    val panel = SimulationPanel(sims.examples.scenes.Stacking)
+    panel.setSize(600, 450)
+    val image = BufferedImage(600, 450, BufferedImage.TYPE_INT_RGB)
+    panel.paint(image.createGraphics()) // sizes the view to the panel
+    val world = panel.staged.world
+    val top = world.bodies.last
+    val viewport = panel.viewport
+    assert(!panel.grab(viewport.pixelX(2.5), viewport.pixelY(3.5)), "nothing there")
+    assert(panel.grab(viewport.pixelX(top.pos.x), viewport.pixelY(top.pos.y)))
+    assert(panel.dragged.contains(top))
+    val start = top.pos
+    panel.dragTo(viewport.pixelX(start.x), viewport.pixelY(start.y + 1))
+    for _ <- 1 to 60 do panel.step()
+    assert(top.pos.y > start.y + 0.7, s"the box was lifted from $start to ${top.pos}")
+    val drawn = BufferedImage(600, 450, BufferedImage.TYPE_INT_RGB)
+    panel.paint(drawn.createGraphics())
+    panel.release()
+    assert(panel.dragged.isEmpty && world.joints.isEmpty)
