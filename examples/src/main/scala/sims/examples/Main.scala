@@ -66,7 +66,11 @@ object Main:
               System.err.println(s"no scene named '$name'; the scenes are:\n$listing")
               sys.exit(2)
             }
-        if options.gui then viewer.Viewer.open(scene)
+        if options.gui then
+          if java.awt.GraphicsEnvironment.isHeadless then
+            System.err.println("the viewer needs a display; without one, run a scene headless: examples/run " + scene.name)
+            sys.exit(1)
+          viewer.Viewer.open(scene)
         else
           // No window is ever opened here: headless mode also works on machines without a display.
           System.setProperty("java.awt.headless", "true")
