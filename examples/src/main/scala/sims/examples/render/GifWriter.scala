@@ -15,7 +15,8 @@ import javax.imageio.stream.ImageOutputStream
   * @param palette          if not empty (at most 256 colours), every pixel is stored as the
   *                         nearest of these colours: pictures drawn in exactly these colours
   *                         stay exact and compress far better than the JDK's own per-frame
-  *                         colour reduction
+  *                         colour reduction; then each frame after the first stores only
+  *                         the rectangle where it differs from the one before
   */
 final class GifWriter(file: File, frameDelayMillis: Int, palette: Seq[Color] = Nil) extends AutoCloseable:
   require(palette.size <= 256, s"a GIF palette has at most 256 colours, got ${palette.size}")
@@ -28,16 +29,45 @@ final class GifWriter(file: File, frameDelayMillis: Int, palette: Seq[Color] = N
   writer.setOutput(output)
   writer.prepareWriteSequence(null)
   private var count = 0
+  private var previous: BufferedImage = null
 
   /** Number of frames written so far. */
   def frames: Int = count
 
   /** Appends one frame. */
   def write(frame: BufferedImage): Unit =
-    val stored = if palette.isEmpty then frame else indexed(frame)
-    val metadata = frameMetadata(stored)
-    writer.writeToSequence(IIOImage(stored, null, metadata), null)
+    if palette.isEmpty then writer.writeToSequence(IIOImage(frame, null, frameMetadata(frame, 0, 0)), null)
+    else
+      val current = indexed(frame)
+      val (left, top, width, height) = changedRectangle(previous, current)
+      val stored = if previous == null then current else current.getSubimage(left, top, width, height)
+      writer.writeToSequence(IIOImage(stored, null, frameMetadata(stored, left, top)), null)
+      previous = current
     count += 1
+
+  /** The smallest rectangle (left, top, width, height) holding every pixel that differs
+    * between the two frames; the whole frame when there is no previous one or a different
+    * size, a single pixel when nothing changed (a frame must still be written for its delay).
+    */
+  private def changedRectangle(before: BufferedImage, after: BufferedImage): (Int, Int, Int, Int) =
+    if before == null || before.getWidth != after.getWidth || before.getHeight != after.getHeight then
+      (0, 0, after.getWidth, after.getHeight)
+    else
+      val a = before.getRaster.getDataBuffer.asInstanceOf[java.awt.image.DataBufferByte].getData
+      val b = after.getRaster.getDataBuffer.asInstanceOf[java.awt.image.DataBufferByte].getData
+      val width = after.getWidth
+      var minX = Int.MaxValue; var minY = Int.MaxValue; var maxX = -1; var maxY = -1
+      var i = 0
+      while i < b.length do
+        if a(i) != b(i) then
+          val x = i % width
+          val y = i / width
+          if x < minX then minX = x
+          if x > maxX then maxX = x
+          if y < minY then minY = y
+          if y > maxY then maxY = y
+        i += 1
+      if maxX < 0 then (0, 0, 1, 1) else (minX, minY, maxX - minX + 1, maxY - minY + 1)
 
   /** Finishes the file. */
   def close(): Unit =
@@ -74,13 +104,21 @@ final class GifWriter(file: File, frameDelayMillis: Int, palette: Seq[Color] = N
       dr * dr + dg * dg + db * db
     palette.indices.minBy(i => distance(palette(i))).toByte
 
-  /** Metadata of one frame: its delay and, on the first frame, the loop-forever extension. */
-  private def frameMetadata(frame: BufferedImage): IIOMetadata =
+  /** Metadata of one frame placed at (left, top): its delay, its colour table and, on the
+    * first frame, the loop-forever extension.
+    */
+  private def frameMetadata(frame: BufferedImage, left: Int, top: Int): IIOMetadata =
     val metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(frame), null)
     val format = metadata.getNativeMetadataFormatName
     val root = metadata.getAsTree(format).asInstanceOf[IIOMetadataNode]
     val control = child(root, "GraphicControlExtension")
-    control.setAttribute("disposalMethod", "none")
+    // Each frame is drawn over the last one: the unchanged parts stay on screen.
+    control.setAttribute("disposalMethod", "doNotDispose")
+    val descriptor = child(root, "ImageDescriptor")
+    descriptor.setAttribute("imageLeftPosition", left.toString)
+    descriptor.setAttribute("imageTopPosition", top.toString)
+    descriptor.setAttribute("imageWidth", frame.getWidth.toString)
+    descriptor.setAttribute("imageHeight", frame.getHeight.toString)
     control.setAttribute("userInputFlag", "FALSE")
     control.setAttribute("transparentColorFlag", "FALSE")
     control.setAttribute("delayTime", math.max(1, math.round(frameDelayMillis / 10.0).toInt).toString)
