@@ -55,6 +55,18 @@ class ScenesSpec extends AnyFunSuite:
       assert(problem(world, s.region).isEmpty, s"${s.name}: ${problem(world, s.region)}")
       assert(s.region.width > 0 && s.view.width > 0)
 
+  test("every scene's action runs and the world steps on afterwards"):
+    val withAction = Scenes.all.filter(_.build().action.isDefined)
+    assert(withAction.map(_.name).toSet == Set(Cannon.name, Wave.name, RagdollScene.name))
+    for scene <- withAction do
+      val staged = scene.build()
+      for _ <- 1 to 10 do staged.world.step()
+      val bodies = staged.world.bodies.size
+      staged.action.get.run()
+      for _ <- 1 to 30 do staged.world.step()
+      assert(notFinite(staged.world).isEmpty, scene.name)
+      assert(staged.world.bodies.size >= bodies, scene.name)
+
   for scene <- Scenes.all do
     val seconds = SecondsOf.getOrElse(scene.name, Seconds)
     test(s"${scene.name} runs $seconds s without NaN, its bodies inside ${scene.region}"):
