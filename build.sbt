@@ -55,6 +55,8 @@ lazy val examples = (project in file("examples"))
     run / javaOptions += s"-Dsims.examples.terminal=${System.console() != null}",
     Test / fork := true,
     Test / javaOptions += "-Djava.awt.headless=true",
+    // The README picture test compares docs/images with a fresh run of the main job.
+    Test / javaOptions += s"-Dsims.root=${(LocalRootProject / baseDirectory).value}",
     Test / parallelExecution := false
   )
 
