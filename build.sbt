@@ -3,6 +3,9 @@ ThisBuild / organization := "io.github.sims-scala"
 ThisBuild / version := "0.1.0-SNAPSHOT"
 ThisBuild / scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked")
 
+// Property tests draw from one fixed seed, so CI runs are repeatable; change it to explore.
+ThisBuild / Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-S", "20261121")
+
 val scalaTestVersion = "3.2.19"
 
 lazy val testDependencies = Seq(

@@ -90,7 +90,7 @@ class RagdollSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCheck
         info(f"thrown at $throwSpeed%.2f m/s, spin $spin%.2f rad/s, from $height%.2f m: largest joint separation $worstSeparation%.2e m; kinetic energy in the last second at most $lateKinetic%.3f J of $released%.0f J released; lowest point $lowest%.4f m")
         worstSeparation should be < 0.02
         lateKinetic should be < 0.01 * released
-        ragdoll.headTorso.pos.y should be < 0.35 // lies on the floor
+        ragdoll.headTorso.pos.y should be < 0.6 // lies or sits on the floor (standing: about 1.2)
         lowest should be > -0.05 // and not through it
     }
   }
