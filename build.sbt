@@ -77,3 +77,19 @@ lazy val docs = (project in file("target/mdoc-project"))
     mdocOut := target.value / "mdoc",
     Test / test := mdoc.toTask("").value
   )
+
+/** Benchmarks (JMH) of SiMS against jBox2D and dyn4j; the peers are bench-only dependencies. */
+lazy val bench = (project in file("bench"))
+  .dependsOn(root)
+  .enablePlugins(JmhPlugin)
+  .settings(
+    name := "sims-bench",
+    publish / skip := true,
+    libraryDependencies ++= Seq(
+      "org.jbox2d" % "jbox2d-library" % "2.2.1.1",
+      "org.dyn4j" % "dyn4j" % "5.0.2"
+    ),
+    coverageEnabled := false,
+    run / fork := true,
+    run / javaOptions ++= Seq("-Xmx2g")
+  )

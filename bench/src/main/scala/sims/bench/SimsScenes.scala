@@ -1,0 +1,84 @@
+package sims.bench
+
+import sims.dynamics.{Body, Circle, Rectangle, Shape, World}
+import sims.dynamics.joints.DistanceJoint
+import sims.geometry.Vector2D
+
+/** The benchmark scenes in SiMS. */
+object SimsScenes:
+  // The contact uses the product of the two shapes' values: sqrt(0.5)^2 = 0.5.
+  private val ShapeFriction = math.sqrt(Scenes.Friction)
+
+  private final class Built(val world: World, val dynamic: IndexedSeq[Body]) extends EngineScene:
+    def step(): Unit = world.step()
+    def dynamicStates: Array[Double] =
+      dynamic.flatMap(b => Seq(b.pos.x, b.pos.y, b.rotation)).toArray
+    def jointLengths: Array[Double] =
+      world.joints.collect { case j: DistanceJoint => (j.connection2 - j.connection1).length }.toArray
+
+  /** A world with the benchmark settings. */
+  def newWorld(): World =
+    val world = World()
+    world.timeStep = Scenes.TimeStep
+    world.iterations = Scenes.Iterations
+    world.gravity = Vector2D(0, Scenes.Gravity)
+    world
+
+  private def material(s: Shape, original: Boolean): s.type =
+    if !original then
+      s.friction = ShapeFriction
+      s.restitution = Scenes.Restitution
+    s
+
+  private def staticBox(b: Scenes.StaticBox, original: Boolean = false): Body =
+    val r = material(Rectangle(b.halfWidth, b.halfHeight, Scenes.Density), original)
+    r.pos = Vector2D(b.x, b.y)
+    val body = r.asBody
+    body.fixed = true
+    body
+
+  private def ball(x: Double, y: Double, radius: Double, original: Boolean = false): Body =
+    val c = material(Circle(radius, Scenes.Density), original)
+    c.pos = Vector2D(x, y)
+    c.asBody
+
+  /** Builds the named scene. */
+  def build(scene: String): EngineScene =
+    val world = newWorld()
+    val dynamic = scene match
+      case "pyramid-20" =>
+        world += staticBox(Scenes.Pyramid.ground)
+        val c = Scenes.Pyramid.centres
+        for i <- 0 until c.length / 2 yield
+          val r = material(Rectangle(Scenes.Pyramid.HalfSide, Scenes.Pyramid.HalfSide, Scenes.Density), false)
+          r.pos = Vector2D(c(2 * i), c(2 * i + 1))
+          val b = r.asBody
+          world += b
+          b
+      case "chain-100" =>
+        val links = for i <- 0 until Scenes.Chain.Links yield
+          val b = ball(Scenes.Chain.x(i), Scenes.Chain.y, Scenes.Chain.Radius)
+          b.shapes.foreach(_.collidable = false)
+          world += b
+          b
+        links.head.fixed = true
+        for i <- 1 until links.length do
+          world += DistanceJoint(links(i - 1), links(i - 1).pos, links(i), links(i).pos)
+        links.tail
+      case "ballstack" =>
+        // The original's scene keeps SiMS's default materials.
+        Scenes.BallStack.statics.foreach(s => world += staticBox(s, original = true))
+        val c = Scenes.BallStack.centres
+        for i <- 0 until c.length / 2 yield
+          val b = ball(c(2 * i), c(2 * i + 1), Scenes.BallStack.Radius, original = true)
+          world += b
+          b
+      case other =>
+        val n = Scenes.ballpitSize(other).getOrElse(throw IllegalArgumentException(s"unknown scene $other"))
+        Scenes.Ballpit.container(n).foreach(s => world += staticBox(s))
+        val c = Scenes.Ballpit.centres(n)
+        for i <- 0 until n yield
+          val b = ball(c(2 * i), c(2 * i + 1), Scenes.Ballpit.Radius)
+          world += b
+          b
+    Built(world, dynamic)

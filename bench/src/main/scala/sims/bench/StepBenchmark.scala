@@ -1,0 +1,51 @@
+package sims.bench
+
+import java.util.concurrent.TimeUnit
+import org.openjdk.jmh.annotations.*
+import scala.compiletime.uninitialized
+
+/** Time of one step of a scene in one engine, after [[Scenes.WarmUpSteps]] steps. The scene is
+  * built once per fork and keeps running through warm-up and measurement; when the fork ends,
+  * its sanity is checked and appended to the file named by the `sims.bench.sanity` property.
+  */
+@State(Scope.Benchmark)
+@BenchmarkMode(Array(Mode.AverageTime))
+@OutputTimeUnit(TimeUnit.MICROSECONDS)
+class StepBenchmark:
+  /** Engine label: SiMS, jBox2D or dyn4j. */
+  @Param(Array("SiMS"))
+  var engine: String = uninitialized
+
+  /** Scene name, one of [[Scenes.names]]. */
+  @Param(Array("ballpit-500"))
+  var scene: String = uninitialized
+
+  private var built: EngineScene = uninitialized
+  private var steps = 0L
+
+  /** Builds the scene and runs the warm-up steps. */
+  @Setup(Level.Trial)
+  def setup(): Unit =
+    built = Engine.named(engine).build(scene)
+    var i = 0
+    while i < Scenes.WarmUpSteps do
+      built.step()
+      i += 1
+    steps = Scenes.WarmUpSteps
+
+  /** One step. */
+  @Benchmark
+  def step(): Unit =
+    built.step()
+    steps += 1
+
+  /** Checks the scene after the run and reports it. */
+  @TearDown(Level.Trial)
+  def checkSanity(): Unit =
+    val result = Sanity.check(scene, built)
+    val line = s"$engine\t$scene\t${result.ok}\t$steps\t${result.detail}\n"
+    Option(System.getProperty("sims.bench.sanity")) match
+      case Some(file) =>
+        java.nio.file.Files.writeString(java.nio.file.Path.of(file), line,
+          java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.APPEND)
+      case None => print(line)
