@@ -6,23 +6,32 @@ import sims.geometry.Vector2D
 /** Collision of two circles. Normal: from the centre of `circle1` to that of `circle2`
   * (straight up if the centres coincide); one point: on the outline of `circle1`,
   * at `c1 + n (d - r2)` with d the distance of the centres.
+  *
+  * The detector reuses one object per candidate pair slot and refills it in place
+  * (`compute`), so a collision taken from `World.collisions` describes the latest step only.
   */
 final class CircleCollision(circle1: Circle, circle2: Circle) extends Collision:
-  val shape1: Circle = circle1
-  val shape2: Circle = circle2
+  private var first: Circle = circle1
+  private var second: Circle = circle2
+  ensureCapacity(1)
+  compute(circle1, circle2)
 
-  private val distance = math.sqrt(
-    (circle2.x - circle1.x) * (circle2.x - circle1.x) + (circle2.y - circle1.y) * (circle2.y - circle1.y))
-  override private[sims] val normalX: Double = if distance == 0 then 0.0 else (circle2.x - circle1.x) / distance
-  override private[sims] val normalY: Double = if distance == 0 then 1.0 else (circle2.y - circle1.y) / distance
-  private val px = circle1.x + normalX * (distance - circle2.radius)
-  private val py = circle1.y + normalY * (distance - circle2.radius)
+  def shape1: Circle = first
+  def shape2: Circle = second
+
+  /** Recomputes this collision for the two circles from their current positions. */
+  private[collision] def compute(c1: Circle, c2: Circle): Unit =
+    first = c1
+    second = c2
+    val distance = math.sqrt((c2.x - c1.x) * (c2.x - c1.x) + (c2.y - c1.y) * (c2.y - c1.y))
+    normalX = if distance == 0 then 0.0 else (c2.x - c1.x) / distance
+    normalY = if distance == 0 then 1.0 else (c2.y - c1.y) / distance
+    pointXs(0) = c1.x + normalX * (distance - c2.radius)
+    pointYs(0) = c1.y + normalY * (distance - c2.radius)
+    pointCount = 1
 
   def normal: Vector2D = Vector2D(normalX, normalY)
-  def points: Iterable[Vector2D] = List(Vector2D(px, py))
-  override private[sims] def pointCount: Int = 1
-  override private[sims] def pointX(i: Int): Double = px
-  override private[sims] def pointY(i: Int): Double = py
+  def points: Iterable[Vector2D] = List(Vector2D(pointXs(0), pointYs(0)))
 
 /** The circle-circle narrowphase test. */
 object CircleCollision:

@@ -19,10 +19,10 @@ import sims.geometry.Vector2D
   */
 abstract class Collision extends Constraint:
   /** The reference shape. */
-  val shape1: Shape
+  def shape1: Shape
 
   /** The incident shape. */
-  val shape2: Shape
+  def shape2: Shape
 
   /** Contact points, world coordinates. */
   def points: Iterable[Vector2D]
@@ -30,16 +30,43 @@ abstract class Collision extends Constraint:
   /** Unit contact normal, pointing away from `shape1`. */
   def normal: Vector2D
 
-  // Hot-loop access; the built-in kinds override these with their own fields.
-  private lazy val pointArray: Array[Vector2D] = points.toArray
-  private lazy val normalVector: Vector2D = normal
-  private[sims] def pointCount: Int = pointArray.length
-  private[sims] def pointX(i: Int): Double = pointArray(i).x
-  private[sims] def pointY(i: Int): Double = pointArray(i).y
-  private[sims] def normalX: Double = normalVector.x
-  private[sims] def normalY: Double = normalVector.y
+  // Hot-loop copy of the normal and the points as plain doubles, read by the corrections
+  // without virtual calls. The built-in kinds write it whenever they are (re)computed; for
+  // other kinds it is loaded once from `normal` and `points` on first use.
+  private[sims] var normalX: Double = 0
+  private[sims] var normalY: Double = 0
+  /** Number of contact points, or -1 until the hot copy is loaded. */
+  private[sims] var pointCount: Int = -1
+  private[sims] var pointXs: Array[Double] = Collision.NoPoints
+  private[sims] var pointYs: Array[Double] = Collision.NoPoints
+
+  private[sims] final def pointX(i: Int): Double = { load(); pointXs(i) }
+  private[sims] final def pointY(i: Int): Double = { load(); pointYs(i) }
+
+  /** Loads the hot copy from `normal` and `points` unless a built-in kind wrote it. */
+  private def load(): Unit =
+    if pointCount < 0 then
+      val n = normal
+      normalX = n.x
+      normalY = n.y
+      val ps = points.toArray
+      pointXs = ps.map(_.x)
+      pointYs = ps.map(_.y)
+      pointCount = ps.length
+
+  /** Makes room for `n` points in the hot copy (built-in kinds; grows, never shrinks). */
+  private[collision] final def ensureCapacity(n: Int): Unit =
+    if pointXs.length < n then
+      pointXs = new Array[Double](math.max(n, 2 * pointXs.length))
+      pointYs = new Array[Double](pointXs.length)
+
+  /** The hot copy's points as vectors (for the built-in kinds' `points`). */
+  private[collision] final def pointVectors: IndexedSeq[Vector2D] =
+    load()
+    scala.collection.immutable.ArraySeq.tabulate(pointCount)(i => Vector2D(pointXs(i), pointYs(i)))
 
   def correctVelocity(h: Double): Unit =
+    load()
     val b1 = shape1.body
     val b2 = shape2.body
     val nx = normalX
@@ -48,8 +75,8 @@ abstract class Collision extends Constraint:
     val mu = shape1.friction * shape2.friction
     var i = 0
     while i < pointCount do
-      val px = pointX(i)
-      val py = pointY(i)
+      val px = pointXs(i)
+      val py = pointYs(i)
       val r1x = px - b1.x; val r1y = py - b1.y
       val r2x = px - b2.x; val r2y = py - b2.y
       // Normal part: an inequality constraint, corrected only when the points approach.
@@ -73,14 +100,15 @@ abstract class Collision extends Constraint:
       i += 1
 
   def correctPosition(h: Double): Unit =
+    load()
     val b1 = shape1.body
     val b2 = shape2.body
     val nx = normalX
     val ny = normalY
     var i = 0
     while i < pointCount do
-      val px = pointX(i)
-      val py = pointY(i)
+      val px = pointXs(i)
+      val py = pointYs(i)
       val overlap = Collision.overlapAlong(shape1, shape2, nx, ny)
       val c = Collision.ToleratedOverlap - overlap
       if c <= 0 then
@@ -98,6 +126,8 @@ abstract class Collision extends Constraint:
 
 /** Constants and helpers of the contact constraint. */
 object Collision:
+  private val NoPoints = new Array[Double](0)
+
   /** Overlap tolerated by position correction, m: deeper overlap is corrected. */
   val ToleratedOverlap: Double = 0.01
 

@@ -45,6 +45,7 @@ class GridDetector(val world: World) extends Detector:
 
   private val pairs = PairBuffer()
   private val found = ArrayBuffer.empty[Collision]
+  private val largeShapes = ArrayBuffer.empty[Shape]
   private val grid = CellGrid()
   private val methods = NarrowphaseCache()
 
@@ -56,16 +57,26 @@ class GridDetector(val world: World) extends Detector:
 
   def detect(): Unit =
     findPairs()
+    methods.update(detectionMethods, collisionMethods)
+    resolvePairs()
     refresh()
 
   /** Reruns the narrowphase on the pairs of the last `detect()` from the current positions. */
   override def refresh(): Unit =
-    methods.update(detectionMethods, collisionMethods)
+    if methods.update(detectionMethods, collisionMethods) then resolvePairs()
     found.clear()
     var i = 0
     while i < pairs.size do
-      val c = methods.collide(pairs.first(i), pairs.second(i))
+      val c = methods.collide(pairs.slot(i))
       if c != null then found += c
+      i += 1
+
+  /** Looks up the narrowphase methods of every pair once, for all the reruns of this step. */
+  private def resolvePairs(): Unit =
+    var i = 0
+    while i < pairs.size do
+      val slot = pairs.slot(i)
+      slot.methods = methods.resolve(slot.first, slot.second)
       i += 1
 
   /** Broadphase: fills `pairs` with every candidate pair once. */
@@ -73,7 +84,8 @@ class GridDetector(val world: World) extends Detector:
     pairs.clear()
     val shapes = world.shapeBuffer
     grid.reset(shapes.length)
-    val large = ArrayBuffer.empty[Shape]
+    val large = largeShapes
+    large.clear()
     val side = _gridSide
     var i = 0
     while i < shapes.length do
@@ -147,13 +159,13 @@ object GridDetector:
     */
   private[collision] object BuiltIn:
     /** A built-in test with a direct two-argument entry. */
-    final class Test(classes: (Class[?], Class[?]), val direct: (Shape, Shape) => Boolean)
+    final class Test(classes: (Class[?], Class[?]), val kind: Int, val direct: (Shape, Shape) => Boolean)
         extends PartialFunction[(Shape, Shape), Boolean]:
       def isDefinedAt(pair: (Shape, Shape)): Boolean = BuiltIn.matches(classes, pair)
       def apply(pair: (Shape, Shape)): Boolean = direct(pair._1, pair._2)
 
     /** A built-in collision constructor with a direct two-argument entry. */
-    final class Make(classes: (Class[?], Class[?]), val direct: (Shape, Shape) => Collision)
+    final class Make(classes: (Class[?], Class[?]), val kind: Int, val direct: (Shape, Shape) => Collision)
         extends PartialFunction[(Shape, Shape), Collision]:
       def isDefinedAt(pair: (Shape, Shape)): Boolean = BuiltIn.matches(classes, pair)
       def apply(pair: (Shape, Shape)): Collision = direct(pair._1, pair._2)
@@ -165,20 +177,20 @@ object GridDetector:
     private val polygon = classOf[ConvexPolygon]
     private type Polygon = Shape & ConvexPolygon
 
-    val circleCircleTest = Test((circle, circle),
+    val circleCircleTest = Test((circle, circle), NarrowphaseCache.CircleCircle,
       (a, b) => CircleCollision.colliding(a.asInstanceOf[Circle], b.asInstanceOf[Circle]))
-    val polygonPolygonTest = Test((polygon, polygon),
+    val polygonPolygonTest = Test((polygon, polygon), NarrowphaseCache.PolygonPolygon,
       (a, b) => PolyCollision.colliding(a.asInstanceOf[Polygon], b.asInstanceOf[Polygon]))
-    val polygonCircleTest = Test((polygon, circle),
+    val polygonCircleTest = Test((polygon, circle), NarrowphaseCache.PolygonCircle,
       (a, b) => PolyCircleCollision.colliding(a.asInstanceOf[Polygon], b.asInstanceOf[Circle]))
-    val circlePolygonTest = Test((circle, polygon),
+    val circlePolygonTest = Test((circle, polygon), NarrowphaseCache.CirclePolygon,
       (a, b) => PolyCircleCollision.colliding(b.asInstanceOf[Polygon], a.asInstanceOf[Circle]))
 
-    val circleCircleCollision = Make((circle, circle),
+    val circleCircleCollision = Make((circle, circle), NarrowphaseCache.CircleCircle,
       (a, b) => CircleCollision(a.asInstanceOf[Circle], b.asInstanceOf[Circle]))
-    val polygonPolygonCollision = Make((polygon, polygon),
+    val polygonPolygonCollision = Make((polygon, polygon), NarrowphaseCache.PolygonPolygon,
       (a, b) => PolyCollision(a.asInstanceOf[Polygon], b.asInstanceOf[Polygon]))
-    val polygonCircleCollision = Make((polygon, circle),
+    val polygonCircleCollision = Make((polygon, circle), NarrowphaseCache.PolygonCircle,
       (a, b) => PolyCircleCollision(a.asInstanceOf[Polygon], b.asInstanceOf[Circle]))
-    val circlePolygonCollision = Make((circle, polygon),
+    val circlePolygonCollision = Make((circle, polygon), NarrowphaseCache.CirclePolygon,
       (a, b) => PolyCircleCollision(b.asInstanceOf[Polygon], a.asInstanceOf[Circle]))

@@ -1,40 +1,91 @@
 package sims.collision
 
 import scala.collection.mutable.ArrayBuffer
-import sims.dynamics.Shape
+import sims.dynamics.{Circle, Shape}
+import sims.geometry.ConvexPolygon
 
 /** Resolves the detector's partial-function lists once per pair of shape classes. The cache is
-  * dropped whenever the lists change, so methods appended later are seen.
+  * dropped whenever the lists change, so methods appended later are seen. When both chosen
+  * methods are the same built-in kind, the narrowphase calls it directly and refills the
+  * pair slot's reusable collision object instead of going through the partial functions.
   */
 private[collision] final class NarrowphaseCache:
+  import NarrowphaseCache.*
+
   private var detectionSnapshot = Array.empty[AnyRef]
   private var collisionSnapshot = Array.empty[AnyRef]
   private val resolved = java.util.HashMap[(Class[?], Class[?]), Resolved]()
-  // One-entry memo: most scenes have one or two class pairs, looked up many times.
-  private var lastClass1: Class[?] = null
-  private var lastClass2: Class[?] = null
-  private var last: Resolved = null
+  // A few recent class pairs, searched by identity before the map: scenes have a handful of
+  // class pairs, looked up for every candidate pair, and the map's key would be a new tuple.
+  private val recentClass1 = new Array[Class[?]](RecentSize)
+  private val recentClass2 = new Array[Class[?]](RecentSize)
+  private val recent = new Array[Resolved](RecentSize)
+  private var recentNext = 0
 
-  /** The test and the constructor chosen for one pair of classes (either may be missing). */
-  private final class Resolved(val test: PartialFunction[(Shape, Shape), Boolean],
-      val make: PartialFunction[(Shape, Shape), Collision])
-
-  /** Drops the cache if either list changed since the last call. */
+  /** Drops the cache if either list changed since the last call; true if it did. */
   def update(detection: ArrayBuffer[PartialFunction[(Shape, Shape), Boolean]],
-      collision: ArrayBuffer[PartialFunction[(Shape, Shape), Collision]]): Unit =
+      collision: ArrayBuffer[PartialFunction[(Shape, Shape), Collision]]): Boolean =
     if !sameContents(detection, detectionSnapshot) || !sameContents(collision, collisionSnapshot) then
       detectionSnapshot = detection.toArray[AnyRef]
       collisionSnapshot = collision.toArray[AnyRef]
       resolved.clear()
-      lastClass1 = null
-      last = null
+      java.util.Arrays.fill(recentClass1.asInstanceOf[Array[AnyRef]], null)
+      java.util.Arrays.fill(recentClass2.asInstanceOf[Array[AnyRef]], null)
+      java.util.Arrays.fill(recent.asInstanceOf[Array[AnyRef]], null)
+      true
+    else false
 
   private def sameContents(buffer: ArrayBuffer[?], snapshot: Array[AnyRef]): Boolean =
-    buffer.length == snapshot.length && buffer.indices.forall(i => buffer(i).asInstanceOf[AnyRef] eq snapshot(i))
+    if buffer.length != snapshot.length then false
+    else
+      var i = 0
+      while i < snapshot.length && (buffer(i).asInstanceOf[AnyRef] eq snapshot(i)) do i += 1
+      i == snapshot.length
 
-  /** The collision of the two shapes, or null if they do not collide. */
-  def collide(a: Shape, b: Shape): Collision =
-    val r = resolve(a, b)
+  /** The collision of the pair in `slot` from the current positions, or null if its shapes do
+    * not collide. Built-in kinds refill the slot's own collision object, and reuse the last
+    * result when neither body has moved since it was computed (same inputs, same result).
+    */
+  def collide(slot: PairSlot): Collision =
+    val a = slot.first
+    val b = slot.second
+    val r = slot.methods
+    if r.kind == General then collideGeneral(r, a, b)
+    else
+      val moves1 = a.body.moves
+      val moves2 = b.body.moves
+      if (slot.doneFirst eq a) && (slot.doneSecond eq b) && slot.doneMoves1 == moves1 && slot.doneMoves2 == moves2 then
+        slot.result
+      else
+        val c = r.kind match
+          case CircleCircle =>
+            val c1 = a.asInstanceOf[Circle]
+            val c2 = b.asInstanceOf[Circle]
+            if !CircleCollision.colliding(c1, c2) then null
+            else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
+            else { slot.circle.compute(c1, c2); slot.circle }
+          case PolygonPolygon =>
+            val p1 = a.asInstanceOf[Polygon]
+            val p2 = b.asInstanceOf[Polygon]
+            if !PolyCollision.colliding(p1, p2) then null
+            else if slot.poly == null then { slot.poly = PolyCollision(p1, p2); slot.poly }
+            else { slot.poly.compute(p1, p2); slot.poly }
+          case PolygonCircle => polygonCircle(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Circle])
+          case _ => polygonCircle(slot, b.asInstanceOf[Polygon], a.asInstanceOf[Circle])
+        slot.doneFirst = a
+        slot.doneSecond = b
+        slot.doneMoves1 = moves1
+        slot.doneMoves2 = moves2
+        slot.result = c
+        c
+
+  private def polygonCircle(slot: PairSlot, p: Polygon, c: Circle): Collision =
+    if !PolyCircleCollision.colliding(p, c) then null
+    else if slot.polyCircle == null then { slot.polyCircle = PolyCircleCollision(p, c); slot.polyCircle }
+    else { slot.polyCircle.compute(p, c); slot.polyCircle }
+
+  /** A pair whose methods are not one built-in kind: through the partial functions. */
+  private def collideGeneral(r: Resolved, a: Shape, b: Shape): Collision =
     val colliding = r.test match
       case t: GridDetector.BuiltIn.Test => t.direct(a, b)
       case t => t((a, b))
@@ -47,10 +98,13 @@ private[collision] final class NarrowphaseCache:
         case m: GridDetector.BuiltIn.Make => m.direct(a, b)
         case m => m((a, b))
 
-  private def resolve(a: Shape, b: Shape): Resolved =
+  /** The methods for the shapes' classes; fails if no detection method covers them. */
+  def resolve(a: Shape, b: Shape): Resolved =
     val c1 = a.getClass
     val c2 = b.getClass
-    if (c1 eq lastClass1) && (c2 eq lastClass2) then last
+    var k = 0
+    while k < RecentSize && !((recentClass1(k) eq c1) && (recentClass2(k) eq c2)) do k += 1
+    if k < RecentSize then recent(k)
     else
       val key = (c1, c2)
       var r = resolved.get(key)
@@ -65,7 +119,27 @@ private[collision] final class NarrowphaseCache:
             s"${c1.getSimpleName} and ${c2.getSimpleName}; append one to detectionMethods")
         r = Resolved(test.get, make.orNull)
         resolved.put(key, r)
-      lastClass1 = c1
-      lastClass2 = c2
-      last = r
+      recentClass1(recentNext) = c1
+      recentClass2(recentNext) = c2
+      recent(recentNext) = r
+      recentNext = (recentNext + 1) % RecentSize
       r
+
+private[collision] object NarrowphaseCache:
+  private type Polygon = Shape & ConvexPolygon
+  private val RecentSize = 8
+
+  /** Kinds of resolved methods: general (through the partial functions) or one built-in kind. */
+  val General = 0
+  val CircleCircle = 1
+  val PolygonPolygon = 2
+  val PolygonCircle = 3
+  val CirclePolygon = 4
+
+  /** The test and the constructor chosen for one pair of classes (either may be missing). */
+  final class Resolved(val test: PartialFunction[(Shape, Shape), Boolean],
+      val make: PartialFunction[(Shape, Shape), Collision]):
+    /** The built-in kind when test and constructor are the same built-in kind, else General. */
+    val kind: Int = (test, make) match
+      case (t: GridDetector.BuiltIn.Test, m: GridDetector.BuiltIn.Make) if t.kind == m.kind => t.kind
+      case _ => General

@@ -2,21 +2,49 @@ package sims.collision
 
 import sims.dynamics.Shape
 
-/** A growable list of shape pairs kept in two arrays (no tuple per pair). */
+/** One candidate pair of the broadphase, with what the narrowphase needs to rerun on it
+  * cheaply: the resolved methods, one reusable collision object per built-in kind, and the
+  * last result together with the bodies' move counts it was computed at. Slots are reused
+  * from step to step, so a steady scene allocates nothing here.
+  */
+private[collision] final class PairSlot:
+  var first: Shape = null
+  var second: Shape = null
+  /** The methods for the pair's shape classes (resolved once per step). */
+  var methods: NarrowphaseCache.Resolved = null
+  var circle: CircleCollision = null
+  var polyCircle: PolyCircleCollision = null
+  var poly: PolyCollision = null
+  // The last narrowphase result of this slot and the inputs it was computed from.
+  var doneFirst: Shape = null
+  var doneSecond: Shape = null
+  var doneMoves1: Long = -1
+  var doneMoves2: Long = -1
+  var result: Collision = null
+
+  /** Forgets the last result (its inputs can no longer be trusted). */
+  def invalidate(): Unit =
+    doneFirst = null
+    doneSecond = null
+    result = null
+
+/** A growable list of pair slots, reused from step to step (no tuple per pair). */
 private[collision] final class PairBuffer:
-  private var firsts = new Array[Shape](64)
-  private var seconds = new Array[Shape](64)
+  private var slots = new Array[PairSlot](64)
   private var count = 0
 
   def size: Int = count
-  def first(i: Int): Shape = firsts(i)
-  def second(i: Int): Shape = seconds(i)
+  def slot(i: Int): PairSlot = slots(i)
+  def first(i: Int): Shape = slots(i).first
+  def second(i: Int): Shape = slots(i).second
   def clear(): Unit = count = 0
 
   def add(a: Shape, b: Shape): Unit =
-    if count == firsts.length then
-      firsts = java.util.Arrays.copyOf(firsts, count * 2)
-      seconds = java.util.Arrays.copyOf(seconds, count * 2)
-    firsts(count) = a
-    seconds(count) = b
+    if count == slots.length then slots = java.util.Arrays.copyOf(slots, count * 2)
+    var s = slots(count)
+    if s == null then
+      s = PairSlot()
+      slots(count) = s
+    s.first = a
+    s.second = b
     count += 1

@@ -9,11 +9,18 @@ import sims.geometry.{ConvexPolygon, Segment, Vector2D}
   * One point: `centre - n r`, on the polygon's outline when the shapes just touch.
   */
 final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) extends Collision:
-  val shape1: Shape & ConvexPolygon = polygon
-  val shape2: Circle = circle
+  private var reference: Shape & ConvexPolygon = polygon
+  private var incident: Circle = circle
+  ensureCapacity(1)
+  compute(polygon, circle)
 
-  private var nx, ny = 0.0
-  locally {
+  def shape1: Shape & ConvexPolygon = reference
+  def shape2: Circle = incident
+
+  /** Recomputes this collision for the polygon and the circle from their current positions. */
+  private[collision] def compute(polygon: Shape & ConvexPolygon, circle: Circle): Unit =
+    reference = polygon
+    incident = circle
     val count = polygon.vertexCount
     val cx = circle.x
     val cy = circle.y
@@ -33,26 +40,21 @@ final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) 
       i += 1
     // Penetrations are distance - r for both, so comparing distances compares penetrations.
     if vertexDistance <= sideDistance && vertexDistance > 0 then
-      nx = (cx - polygon.vertexX(vertex)) / vertexDistance
-      ny = (cy - polygon.vertexY(vertex)) / vertexDistance
+      normalX = (cx - polygon.vertexX(vertex)) / vertexDistance
+      normalY = (cy - polygon.vertexY(vertex)) / vertexDistance
     else
       val j = if side + 1 == count then 0 else side + 1
       val dx = polygon.vertexX(j) - polygon.vertexX(side)
       val dy = polygon.vertexY(j) - polygon.vertexY(side)
       val length = math.sqrt(dx * dx + dy * dy)
-      nx = dy / length // right normal of the side: outward for counter-clockwise vertices
-      ny = -dx / length
-  }
-  override private[sims] val normalX: Double = nx
-  override private[sims] val normalY: Double = ny
-  private val px = circle.x - nx * circle.radius
-  private val py = circle.y - ny * circle.radius
+      normalX = dy / length // right normal of the side: outward for counter-clockwise vertices
+      normalY = -dx / length
+    pointXs(0) = circle.x - normalX * circle.radius
+    pointYs(0) = circle.y - normalY * circle.radius
+    pointCount = 1
 
   def normal: Vector2D = Vector2D(normalX, normalY)
-  def points: Iterable[Vector2D] = List(Vector2D(px, py))
-  override private[sims] def pointCount: Int = 1
-  override private[sims] def pointX(i: Int): Double = px
-  override private[sims] def pointY(i: Int): Double = py
+  def points: Iterable[Vector2D] = List(Vector2D(pointXs(0), pointYs(0)))
 
 /** The polygon-circle narrowphase test. */
 object PolyCircleCollision:

@@ -1,6 +1,5 @@
 package sims.collision
 
-import scala.collection.immutable.ArraySeq
 import sims.dynamics.Shape
 import sims.geometry.{ConvexPolygon, Vector2D}
 
@@ -12,42 +11,47 @@ import sims.geometry.{ConvexPolygon, Vector2D}
   * reference, then the reference's vertices inside the incident polygon.
   */
 final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon) extends Collision:
-  private val axis = PolyCollision.referenceAxis(first, second)
-  private val secondIsReference = axis < second.vertexCount
+  private var reference: Shape & ConvexPolygon = first
+  private var incident: Shape & ConvexPolygon = second
+  compute(first, second)
 
-  val shape1: Shape & ConvexPolygon = if secondIsReference then second else first
-  val shape2: Shape & ConvexPolygon = if secondIsReference then first else second
+  def shape1: Shape & ConvexPolygon = reference
+  def shape2: Shape & ConvexPolygon = incident
 
-  // The overlap of two intervals does not depend on the axis' sign, so parallel opposite
-  // sides (a box's top and bottom) tie and the side found first may face away from the
-  // incident polygon. The normal is therefore oriented from the reference towards the
-  // incident polygon (see the deviations: the original hid this by reporting every pair in
-  // both orders).
-  private val facing = PolyCollision.facing(shape1, shape2,
-    PolyCollision.sideNormalX(shape1, PolyCollision.sideOf(axis, second)),
-    PolyCollision.sideNormalY(shape1, PolyCollision.sideOf(axis, second)))
-  override private[sims] val normalX: Double = facing * PolyCollision.sideNormalX(shape1, PolyCollision.sideOf(axis, second))
-  override private[sims] val normalY: Double = facing * PolyCollision.sideNormalY(shape1, PolyCollision.sideOf(axis, second))
+  /** Recomputes this collision for the pair (first, second) from their current positions. */
+  private[collision] def compute(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon): Unit =
+    val axis = PolyCollision.referenceAxis(first, second)
+    val secondIsReference = axis < second.vertexCount
+    reference = if secondIsReference then second else first
+    incident = if secondIsReference then first else second
+    // The overlap of two intervals does not depend on the axis' sign, so parallel opposite
+    // sides (a box's top and bottom) tie and the side found first may face away from the
+    // incident polygon. The normal is therefore oriented from the reference towards the
+    // incident polygon (see the deviations: the original hid this by reporting every pair in
+    // both orders).
+    val side = PolyCollision.sideOf(axis, second)
+    val nx = PolyCollision.sideNormalX(reference, side)
+    val ny = PolyCollision.sideNormalY(reference, side)
+    val facing = PolyCollision.facing(reference, incident, nx, ny)
+    normalX = facing * nx
+    normalY = facing * ny
+    ensureCapacity(first.vertexCount + second.vertexCount)
+    pointCount = 0
+    collect(incident, reference)
+    collect(reference, incident)
 
-  private val (xs, ys) =
-    val bx = Array.newBuilder[Double]
-    val by = Array.newBuilder[Double]
-    def collect(from: ConvexPolygon, inside: ConvexPolygon): Unit =
-      var i = 0
-      while i < from.vertexCount do
-        if PolyCollision.contains(inside, from.vertexX(i), from.vertexY(i)) then
-          bx += from.vertexX(i)
-          by += from.vertexY(i)
-        i += 1
-    collect(shape2, shape1)
-    collect(shape1, shape2)
-    (bx.result(), by.result())
+  /** Appends the vertices of `from` that lie inside `inside` to the points. */
+  private def collect(from: ConvexPolygon, inside: ConvexPolygon): Unit =
+    var i = 0
+    while i < from.vertexCount do
+      if PolyCollision.contains(inside, from.vertexX(i), from.vertexY(i)) then
+        pointXs(pointCount) = from.vertexX(i)
+        pointYs(pointCount) = from.vertexY(i)
+        pointCount += 1
+      i += 1
 
   def normal: Vector2D = Vector2D(normalX, normalY)
-  def points: Iterable[Vector2D] = ArraySeq.tabulate(xs.length)(i => Vector2D(xs(i), ys(i)))
-  override private[sims] def pointCount: Int = xs.length
-  override private[sims] def pointX(i: Int): Double = xs(i)
-  override private[sims] def pointY(i: Int): Double = ys(i)
+  def points: Iterable[Vector2D] = pointVectors
 
 /** The polygon-polygon narrowphase (separating axis theorem). */
 object PolyCollision:

@@ -37,6 +37,11 @@ final class Body(initialShapes: Shape*):
   // True when every shape sits on the centre of mass: moving needs no trigonometry then.
   private var allCentred = true
 
+  /** Counts the changes of the body's placement: the narrowphase reuses a pair's last result
+    * while the counts of both its bodies are unchanged.
+    */
+  private[sims] var moves: Long = 0
+
   /** The world this body is in, or null. */
   private[sims] var world: World = null
 
@@ -44,6 +49,7 @@ final class Body(initialShapes: Shape*):
 
   /** Recomputes mass, centre of mass, inertia and the shapes' offsets from their positions. */
   private[sims] def shapesChanged(): Unit =
+    moves += 1
     var m, sx, sy = 0.0
     for s <- shapes do
       m += s.mass
@@ -73,6 +79,7 @@ final class Body(initialShapes: Shape*):
 
   /** Places every shape from the body's centre and rotation. */
   private[sims] def placeShapes(): Unit =
+    moves += 1
     if allCentred then
       var i = 0
       while i < shapes.length do

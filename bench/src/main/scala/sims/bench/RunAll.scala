@@ -13,7 +13,7 @@ import scala.jdk.CollectionConverters.*
   *
   * Arguments (all optional): scene names to run (default: all), `--forks N` (default 1),
   * `--iterations N` measurement iterations of 1 s (default 5), `--warmup N` warm-up iterations
-  * of 1 s after the warm-up steps (default 3), `--out FILE`.
+  * of 1 s after the warm-up steps (default 3), `--out FILE` (relative to the repository's root).
   */
 object RunAll:
   /** One engine's figures for one scene. */
@@ -56,10 +56,9 @@ object RunAll:
       (a(0), a(1)) -> (a(2).toBoolean, a(3).toLong, a(4))).toMap
     val rows = results.map(row(_, sanity))
     val date = java.time.LocalDate.now().toString
-    val file = out.map(Path.of(_)).getOrElse {
-      val dir = if Files.isDirectory(Path.of("bench/results")) then Path.of("bench/results") else Path.of("results")
-      dir.resolve(s"$date.md")
-    }
+    // sbt forks the run in bench/; paths are taken relative to the repository's root.
+    val root = if Files.isDirectory(Path.of("bench/results")) then Path.of(".") else Path.of("..")
+    val file = root.resolve(out.getOrElse(s"bench/results/$date.md"))
     val text = Report.markdown(rows, date, forks, warmup, iterations, minutes)
     Files.writeString(file, text)
     println(text)
