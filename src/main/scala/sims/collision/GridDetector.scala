@@ -79,21 +79,76 @@ class GridDetector(val world: World) extends Detector:
       slot.methods = methods.resolve(slot.first, slot.second)
       i += 1
 
-  /** Broadphase: fills `pairs` with every candidate pair once. */
+  // Broadphase state, reused from step to step: each shape's AABB, read once per step.
+  private var boxMinX, boxMinY, boxMaxX, boxMaxY = new Array[Double](0)
+  /** Per shape: 0 in the fine grid, 1 tested against all earlier shapes, 2 large, 3 not collidable. */
+  private var placement = new Array[Byte](0)
+  private val wide = ArrayBuffer.empty[Int]
+  // Candidates of the shape being placed: their order keys and shape indices.
+  private var groupKeys = new Array[Long](16)
+  private var groupSize = 0
+
+  /** Broadphase: fills `pairs` with every candidate pair once.
+    *
+    * The pairs and their order are those of the `gridSide` grid: for each shape in world order,
+    * its partners among the earlier shapes, cell by cell of the shape's cells (x, then y), and
+    * within a cell the most recently added partner first (a pair is reported in the cell that
+    * holds the lower-left corner of the two AABBs' overlap). Coarse cells are crowded with
+    * small shapes, so the partners are found with a finer internal grid sized to the shapes
+    * and then put in that order: faster, and the same pairs in the same order.
+    */
   private def findPairs(): Unit =
     pairs.clear()
     val shapes = world.shapeBuffer
-    grid.reset(shapes.length)
+    val n = shapes.length
+    if boxMinX.length < n then
+      val capacity = math.max(n, 2 * boxMinX.length)
+      boxMinX = new Array[Double](capacity); boxMinY = new Array[Double](capacity)
+      boxMaxX = new Array[Double](capacity); boxMaxY = new Array[Double](capacity)
+      placement = new Array[Byte](capacity)
+    val side = _gridSide
     val large = largeShapes
     large.clear()
-    val side = _gridSide
+    wide.clear()
+    // Bounds, the large shapes, and the mean extent of the others for the fine grid's cells.
+    var extentSum = 0.0
+    var counted = 0
     var i = 0
-    while i < shapes.length do
+    while i < n do
       val s = shapes(i)
-      if s.collidable then
-        val x0 = GridDetector.cell(s.minX, side); val x1 = GridDetector.cell(s.maxX, side)
-        val y0 = GridDetector.cell(s.minY, side); val y1 = GridDetector.cell(s.maxY, side)
-        if (x1.toLong - x0 + 1) * (y1.toLong - y0 + 1) > GridDetector.LargeShapeCells then large += s
+      if !s.collidable then placement(i) = GridDetector.Ignored
+      else
+        val x0 = s.minX; val y0 = s.minY; val x1 = s.maxX; val y1 = s.maxY
+        boxMinX(i) = x0; boxMinY(i) = y0; boxMaxX(i) = x1; boxMaxY(i) = y1
+        val cells = (GridDetector.cell(x1, side).toLong - GridDetector.cell(x0, side) + 1) *
+          (GridDetector.cell(y1, side).toLong - GridDetector.cell(y0, side) + 1)
+        if cells > GridDetector.LargeShapeCells then
+          placement(i) = GridDetector.Large
+          large += s
+        else
+          placement(i) = GridDetector.Fine
+          extentSum += math.max(x1 - x0, y1 - y0)
+          counted += 1
+      i += 1
+    val fine =
+      val mean = if counted == 0 then side else extentSum / counted * GridDetector.FineCellPerExtent
+      if mean > 0 && mean <= side then mean else side
+    grid.reset(n)
+    i = 0
+    while i < n do
+      if placement(i) == GridDetector.Fine then
+        val x0 = GridDetector.cell(boxMinX(i), fine); val x1 = GridDetector.cell(boxMaxX(i), fine)
+        val y0 = GridDetector.cell(boxMinY(i), fine); val y1 = GridDetector.cell(boxMaxY(i), fine)
+        groupSize = 0
+        if (x1.toLong - x0 + 1) * (y1.toLong - y0 + 1) > GridDetector.FineShapeCells then
+          // Too big for the fine grid: tested against every earlier shape instead.
+          placement(i) = GridDetector.Wide
+          var j = 0
+          while j < i do
+            val p = placement(j)
+            if (p == GridDetector.Fine || p == GridDetector.Wide) && candidates(j, i, shapes) then addToGroup(j, i, side)
+            j += 1
+          wide += i
         else
           // Long counters: a cell index at Int.MaxValue must not wrap around.
           var cxLong = x0.toLong
@@ -102,16 +157,27 @@ class GridDetector(val world: World) extends Detector:
             var cyLong = y0.toLong
             while cyLong <= y1 do
               val cy = cyLong.toInt
-              // Pair s with the earlier shapes of this cell, then join the cell.
               var entry = grid.firstEntry(cx, cy)
               while entry >= 0 do
-                val other = shapes(grid.shapeOf(entry))
-                if firstSharedCell(other, s, cx, cy, side) && GridDetector.candidates(other, s) then
-                  pairs.add(other, s)
+                val j = grid.shapeOf(entry)
+                // Each pair once: in the fine cell holding the corner of the AABBs' overlap.
+                if GridDetector.cell(math.max(boxMinX(j), boxMinX(i)), fine) == cx &&
+                    GridDetector.cell(math.max(boxMinY(j), boxMinY(i)), fine) == cy &&
+                    candidates(j, i, shapes) then
+                  addToGroup(j, i, side)
                 entry = grid.nextEntry(entry)
               grid.insert(cx, cy, i)
               cyLong += 1
             cxLong += 1
+          var k = 0
+          while k < wide.length do
+            val j = wide(k)
+            if candidates(j, i, shapes) then addToGroup(j, i, side)
+            k += 1
+        var g = 0
+        while g < groupSize do
+          pairs.add(shapes(GridDetector.groupShape(groupKeys(g))), shapes(i))
+          g += 1
       i += 1
     // Large shapes meet every collidable shape directly.
     var k = 0
@@ -126,12 +192,35 @@ class GridDetector(val world: World) extends Detector:
         j += 1
       k += 1
 
-  /** True if (cx, cy) holds the lower-left corner of the two AABBs' overlap: the one cell in
-    * which the pair is reported, however many cells the shapes share.
+  /** The pair filters of the broadphase for shapes j and i, from the bounds read this step. */
+  private def candidates(j: Int, i: Int, shapes: Array[sims.dynamics.Shape]): Boolean =
+    sims.geometry.AABB.overlaps(boxMinX(j), boxMinY(j), boxMaxX(j), boxMaxY(j),
+      boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && {
+      val a = shapes(j)
+      val b = shapes(i)
+      (a.body ne b.body) && !(a.body.fixed && b.body.fixed) &&
+        (a.transientShapes.isEmpty || !a.transientShapes.contains(b)) &&
+        (b.transientShapes.isEmpty || !b.transientShapes.contains(a))
+    }
+
+  /** Inserts partner j of shape i into the group, in the coarse grid's order: by the rank of
+    * the coarse cell holding the overlap's corner among i's cells, then the later shape first.
     */
-  private def firstSharedCell(a: Shape, b: Shape, cx: Int, cy: Int, side: Double): Boolean =
-    GridDetector.cell(math.max(a.minX, b.minX), side) == cx &&
-      GridDetector.cell(math.max(a.minY, b.minY), side) == cy
+  private def addToGroup(j: Int, i: Int, side: Double): Unit =
+    val x0 = GridDetector.cell(boxMinX(i), side)
+    val y0 = GridDetector.cell(boxMinY(i), side)
+    val rows = GridDetector.cell(boxMaxY(i), side).toLong - y0 + 1
+    val cx = GridDetector.cell(math.max(boxMinX(j), boxMinX(i)), side)
+    val cy = GridDetector.cell(math.max(boxMinY(j), boxMinY(i)), side)
+    val rank = (cx.toLong - x0) * rows + (cy.toLong - y0)
+    val key = (rank << 32) | (Int.MaxValue - j).toLong
+    if groupSize == groupKeys.length then groupKeys = java.util.Arrays.copyOf(groupKeys, 2 * groupSize)
+    var g = groupSize
+    while g > 0 && groupKeys(g - 1) > key do
+      groupKeys(g) = groupKeys(g - 1)
+      g -= 1
+    groupKeys(g) = key
+    groupSize += 1
 
 /** Defaults and the built-in narrowphase of [[GridDetector]]. */
 object GridDetector:
@@ -140,6 +229,18 @@ object GridDetector:
 
   /** Shapes covering more cells than this bypass the grid. */
   val LargeShapeCells: Long = 64
+
+  /** Side of the internal fine grid's cells per mean extent of the shapes in it. */
+  private val FineCellPerExtent = 1.5
+  /** Shapes covering more fine cells than this are tested against all earlier shapes. */
+  private val FineShapeCells = 64L
+  private val Fine: Byte = 0
+  private val Wide: Byte = 1
+  private val Large: Byte = 2
+  private val Ignored: Byte = 3
+
+  /** The shape index in a group key. */
+  private inline def groupShape(key: Long): Int = Int.MaxValue - (key & 0xffffffffL).toInt
 
   /** Grid cell index of a coordinate: floor(coordinate / side), clamped to the Int range. */
   private[collision] def cell(coordinate: Double, side: Double): Int =
