@@ -21,9 +21,13 @@ final class CircleCollision(circle1: Circle, circle2: Circle) extends Collision:
 
   /** Recomputes this collision for the two circles from their current positions. */
   private[collision] def compute(c1: Circle, c2: Circle): Unit =
+    compute(c1, c2, math.sqrt((c2.x - c1.x) * (c2.x - c1.x) + (c2.y - c1.y) * (c2.y - c1.y)))
+
+  /** `compute` with the distance of the centres already known (from the test). */
+  private[collision] def compute(c1: Circle, c2: Circle, distance: Double): Unit =
+    armsCurrent = false
     first = c1
     second = c2
-    val distance = math.sqrt((c2.x - c1.x) * (c2.x - c1.x) + (c2.y - c1.y) * (c2.y - c1.y))
     normalX = if distance == 0 then 0.0 else (c2.x - c1.x) / distance
     normalY = if distance == 0 then 1.0 else (c2.y - c1.y) / distance
     pointXs(0) = c1.x + normalX * (distance - c2.radius)
@@ -40,3 +44,9 @@ object CircleCollision:
     val dx = c1.x - c2.x
     val dy = c1.y - c2.y
     math.sqrt(dx * dx + dy * dy) - (c1.radius + c2.radius) <= 0
+
+  /** Distance of the centres; the same value as `colliding` and `compute` use (the squares of
+    * c1 - c2 and c2 - c1 are identical), so the narrowphase computes it once for both.
+    */
+  private[collision] inline def centreDistance(c1: Circle, c2: Circle): Double =
+    math.sqrt((c2.x - c1.x) * (c2.x - c1.x) + (c2.y - c1.y) * (c2.y - c1.y))

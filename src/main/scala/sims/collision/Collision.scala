@@ -65,26 +65,55 @@ abstract class Collision extends Constraint:
     load()
     scala.collection.immutable.ArraySeq.tabulate(pointCount)(i => Vector2D(pointXs(i), pointYs(i)))
 
-  def correctVelocity(h: Double): Unit =
-    load()
-    val b1 = shape1.body
-    val b2 = shape2.body
+  // Per point, what velocity correction needs that depends only on positions: the arms and
+  // the effective masses along n and t. Positions do not change during phase 4, so these are
+  // computed once per step (when the bodies have moved or the points were recomputed) instead
+  // of in each of the iterations; the values are the same either way.
+  private var arms = Collision.NoPoints // r1x, r1y, r2x, r2y, m, mT per point
+  private var armsMoves1, armsMoves2 = -1L
+  /** Set by the built-in kinds whenever they recompute the points. */
+  private[collision] var armsCurrent = false
+
+  private def prepareArms(b1: sims.dynamics.Body, b2: sims.dynamics.Body): Unit =
+    if arms.length < 6 * pointCount then arms = new Array[Double](6 * math.max(pointCount, 2))
     val nx = normalX
     val ny = normalY
-    val e = shape1.restitution * shape2.restitution
-    val mu = shape1.friction * shape2.friction
+    val tx = -ny
+    val ty = nx
     var i = 0
     while i < pointCount do
       val px = pointXs(i)
       val py = pointYs(i)
       val r1x = px - b1.x; val r1y = py - b1.y
       val r2x = px - b2.x; val r2y = py - b2.y
+      arms(6 * i) = r1x; arms(6 * i + 1) = r1y; arms(6 * i + 2) = r2x; arms(6 * i + 3) = r2y
+      arms(6 * i + 4) = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+      arms(6 * i + 5) = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
+      i += 1
+    armsMoves1 = b1.moves
+    armsMoves2 = b2.moves
+    armsCurrent = true
+
+  def correctVelocity(h: Double): Unit =
+    load()
+    val b1 = shape1.body
+    val b2 = shape2.body
+    if !armsCurrent || armsMoves1 != b1.moves || armsMoves2 != b2.moves then prepareArms(b1, b2)
+    val nx = normalX
+    val ny = normalY
+    val e = shape1.restitution * shape2.restitution
+    val mu = shape1.friction * shape2.friction
+    val a = arms
+    var i = 0
+    while i < pointCount do
+      val r1x = a(6 * i); val r1y = a(6 * i + 1)
+      val r2x = a(6 * i + 2); val r2y = a(6 * i + 3)
       // Normal part: an inequality constraint, corrected only when the points approach.
       val vn = Collision.relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
       val cDot = vn * (1 + e)
       var lambda = 0.0
       if cDot <= 0 then
-        val m = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+        val m = a(6 * i + 4)
         lambda = -m * cDot
         b1.impulseAt(-nx * lambda, -ny * lambda, r1x, r1y)
         b2.impulseAt(nx * lambda, ny * lambda, r2x, r2y)
@@ -92,7 +121,7 @@ abstract class Collision extends Constraint:
       val tx = -ny
       val ty = nx
       val vt = Collision.relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
-      val mT = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
+      val mT = a(6 * i + 5)
       val bound = mu * math.abs(lambda)
       val lambdaT = math.max(-bound, math.min(bound, -mT * vt))
       b1.impulseAt(-tx * lambdaT, -ty * lambdaT, r1x, r1y)

@@ -61,9 +61,10 @@ private[collision] final class NarrowphaseCache:
           case CircleCircle =>
             val c1 = a.asInstanceOf[Circle]
             val c2 = b.asInstanceOf[Circle]
-            if !CircleCollision.colliding(c1, c2) then null
+            val distance = CircleCollision.centreDistance(c1, c2)
+            if !(distance - (c1.radius + c2.radius) <= 0) then null
             else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
-            else { slot.circle.compute(c1, c2); slot.circle }
+            else { slot.circle.compute(c1, c2, distance); slot.circle }
           case PolygonPolygon =>
             val p1 = a.asInstanceOf[Polygon]
             val p2 = b.asInstanceOf[Polygon]

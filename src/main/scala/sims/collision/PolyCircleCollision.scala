@@ -19,6 +19,7 @@ final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) 
 
   /** Recomputes this collision for the polygon and the circle from their current positions. */
   private[collision] def compute(polygon: Shape & ConvexPolygon, circle: Circle): Unit =
+    armsCurrent = false
     reference = polygon
     incident = circle
     val count = polygon.vertexCount

@@ -20,6 +20,7 @@ final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPo
 
   /** Recomputes this collision for the pair (first, second) from their current positions. */
   private[collision] def compute(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon): Unit =
+    armsCurrent = false
     val axis = PolyCollision.referenceAxis(first, second)
     val secondIsReference = axis < second.vertexCount
     reference = if secondIsReference then second else first

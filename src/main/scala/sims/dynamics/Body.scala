@@ -20,6 +20,8 @@ final class Body(initialShapes: Shape*):
     if s.body != null then throw IllegalArgumentException(s"shape $s already belongs to a body")
     if shapes.indexWhere(_ eq s) != i then throw IllegalArgumentException(s"shape $s is given twice")
   shapes.foreach(_._body = this)
+  // The same shapes in an array, for the solver's loops.
+  private val shapeArray: Array[Shape] = shapes.toArray
 
   // State as plain doubles: the solver reads and writes these without allocating.
   private[sims] var x, y: Double = 0 // centre of mass
@@ -82,15 +84,15 @@ final class Body(initialShapes: Shape*):
     moves += 1
     if allCentred then
       var i = 0
-      while i < shapes.length do
-        shapes(i).place(x, y, angle + relativeAngle(i))
+      while i < shapeArray.length do
+        shapeArray(i).place(x, y, angle + relativeAngle(i))
         i += 1
     else
       val c = math.cos(angle)
       val s = math.sin(angle)
       var i = 0
-      while i < shapes.length do
-        shapes(i).place(x + offsetX(i) * c - offsetY(i) * s, y + offsetX(i) * s + offsetY(i) * c,
+      while i < shapeArray.length do
+        shapeArray(i).place(x + offsetX(i) * c - offsetY(i) * s, y + offsetX(i) * s + offsetY(i) * c,
           angle + relativeAngle(i))
         i += 1
 
@@ -173,6 +175,7 @@ final class Body(initialShapes: Shape*):
 
   /** Fixes or frees the body; fixing it also sets both velocities to 0. */
   def fixed_=(value: Boolean): Unit =
+    moves += 1 // the inverse masses change: cached effective masses must be recomputed
     _fixed = value
     if value then
       vx = 0; vy = 0; w = 0
