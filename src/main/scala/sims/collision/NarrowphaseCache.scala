@@ -61,8 +61,24 @@ private[collision] final class NarrowphaseCache:
           case CircleCircle =>
             val c1 = a.asInstanceOf[Circle]
             val c2 = b.asInstanceOf[Circle]
+            val b1 = a.body
+            val b2 = b.body
+            if slot.result == null && (slot.doneFirst eq a) && (slot.doneSecond eq b) &&
+                slot.doneJumps1 == b1.jumps && slot.doneJumps2 == b2.jumps &&
+                (b1.travel - slot.doneTravel1) + (b2.travel - slot.doneTravel2) < slot.gap then
+              // Still apart for sure: keep the last result and the reference point of the bound.
+              return null
             val distance = CircleCollision.centreDistance(c1, c2)
-            if !(distance - (c1.radius + c2.radius) <= 0) then null
+            val separation = distance - (c1.radius + c2.radius)
+            slot.gap =
+              if b1.centred && b2.centred then
+                separation - GapMargin * (1 + math.abs(c1.x) + math.abs(c1.y) + math.abs(c2.x) + math.abs(c2.y) + distance)
+              else 0
+            slot.doneTravel1 = b1.travel
+            slot.doneTravel2 = b2.travel
+            slot.doneJumps1 = b1.jumps
+            slot.doneJumps2 = b2.jumps
+            if !(separation <= 0) then null
             else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
             else { slot.circle.compute(c1, c2, distance); slot.circle }
           case PolygonPolygon =>
@@ -129,6 +145,10 @@ private[collision] final class NarrowphaseCache:
 private[collision] object NarrowphaseCache:
   private type Polygon = Shape & ConvexPolygon
   private val RecentSize = 8
+  /** Rounding margin of a circle pair's gap, per unit of coordinate magnitude: far more than
+    * the error of the distance and of the travel differences.
+    */
+  private val GapMargin = 1e-12
 
   /** Kinds of resolved methods: general (through the partial functions) or one built-in kind. */
   val General = 0

@@ -21,6 +21,14 @@ private[collision] final class PairSlot:
   var doneMoves1: Long = -1
   var doneMoves2: Long = -1
   var result: Collision = null
+  // For two centred circles found apart: their gap (less a rounding margin) and the bodies'
+  // travel and jump counts then. While the bodies have travelled less than the gap in total,
+  // the circles are still apart: the test would say so again.
+  var gap: Double = 0
+  var doneTravel1: Double = 0
+  var doneTravel2: Double = 0
+  var doneJumps1: Long = -1
+  var doneJumps2: Long = -1
 
   /** Forgets the last result (its inputs can no longer be trusted). */
   def invalidate(): Unit =

@@ -44,6 +44,21 @@ final class Body(initialShapes: Shape*):
     */
   private[sims] var moves: Long = 0
 
+  /** Counts placements other than `displace` (pos, rotation, restore, shape changes): jumps of
+    * unknown size, after which `travel` says nothing about where the body went.
+    */
+  private[sims] var jumps: Long = 0
+
+  /** An upper bound of the path the centre has travelled through `displace` calls: it grows by
+    * at least |dx| + |dy| and the rounding of each move, never less. Between two readings, with
+    * `jumps` unchanged, the centre moved at most the difference; the narrowphase uses it to
+    * keep a pair of centred shapes known to be apart without recomputing it.
+    */
+  private[sims] var travel: Double = 0
+
+  /** True when every shape sits on the centre of mass (so shapes move exactly as the centre). */
+  private[sims] def centred: Boolean = allCentred
+
   /** The world this body is in, or null. */
   private[sims] var world: World = null
 
@@ -52,6 +67,7 @@ final class Body(initialShapes: Shape*):
   /** Recomputes mass, centre of mass, inertia and the shapes' offsets from their positions. */
   private[sims] def shapesChanged(): Unit =
     moves += 1
+    jumps += 1
     var m, sx, sy = 0.0
     for s <- shapes do
       m += s.mass
@@ -81,6 +97,10 @@ final class Body(initialShapes: Shape*):
 
   /** Places every shape from the body's centre and rotation. */
   private[sims] def placeShapes(): Unit =
+    jumps += 1
+    place()
+
+  private def place(): Unit =
     moves += 1
     if allCentred then
       var i = 0
@@ -102,7 +122,9 @@ final class Body(initialShapes: Shape*):
       x += dx
       y += dy
       angle += dAngle
-      placeShapes()
+      // Rounded up, so that it never falls behind the true path, rounding of x and y included.
+      travel = Math.nextUp(travel + (math.abs(dx) + math.abs(dy) + Shape.RoundingPerMove * (math.abs(x) + math.abs(y) + 1)))
+      place()
 
   /** Adds the impulse (px, py) acting at offset (rx, ry) from the centre (solver use). */
   private[sims] def impulseAt(px: Double, py: Double, rx: Double, ry: Double): Unit =
@@ -215,3 +237,4 @@ final class Body(initialShapes: Shape*):
   def contains(point: Vector2D): Boolean = shapes.exists(_.contains(point))
 
   override def toString: String = s"Body(pos = $pos, shapes = ${shapes.mkString(", ")})"
+

@@ -131,6 +131,11 @@ object Shape:
   /** Default coefficient of friction of a new shape. */
   val DefaultFriction: Double = 0.707
 
+  /** Bound of the rounding error of one move of a body, per unit of coordinate magnitude
+    * (a few ulps), for the narrowphase's travel bounds.
+    */
+  private[sims] val RoundingPerMove: Double = 1e-15
+
   /** Fails unless `value` is finite and strictly positive. */
   private[sims] def requirePositive(name: String, value: Double): Double =
     if !(value > 0) || value.isInfinite then
