@@ -113,19 +113,20 @@ object PolyCollision:
   private def sideOf(k: Int, second: ConvexPolygon): Int =
     if k < second.vertexCount then k else k - second.vertexCount
 
-  private[collision] def sideNormalX(p: ConvexPolygon, i: Int): Double =
-    val j = if i + 1 == p.vertexCount then 0 else i + 1
-    val dx = p.vertexX(j) - p.vertexX(i)
-    val dy = p.vertexY(j) - p.vertexY(i)
-    dy / math.sqrt(dx * dx + dy * dy)
+  private[collision] def sideNormalX(p: ConvexPolygon, i: Int): Double = p.sideNormalX(i)
 
-  private[collision] def sideNormalY(p: ConvexPolygon, i: Int): Double =
-    val j = if i + 1 == p.vertexCount then 0 else i + 1
-    val dx = p.vertexX(j) - p.vertexX(i)
-    val dy = p.vertexY(j) - p.vertexY(i)
-    -dx / math.sqrt(dx * dx + dy * dy)
+  private[collision] def sideNormalY(p: ConvexPolygon, i: Int): Double = p.sideNormalY(i)
 
-  private def projectMin(p: ConvexPolygon, ax: Double, ay: Double): Double =
+  // A library polygon projects itself from its vertex arrays (the same loop, the same result).
+  private def projectMin(p: ConvexPolygon, ax: Double, ay: Double): Double = p match
+    case q: sims.dynamics.Polygon => q.projectMin(ax, ay)
+    case _ => projectMinOf(p, ax, ay)
+
+  private def projectMax(p: ConvexPolygon, ax: Double, ay: Double): Double = p match
+    case q: sims.dynamics.Polygon => q.projectMax(ax, ay)
+    case _ => projectMaxOf(p, ax, ay)
+
+  private def projectMinOf(p: ConvexPolygon, ax: Double, ay: Double): Double =
     var lower = Double.PositiveInfinity
     var i = 0
     while i < p.vertexCount do
@@ -134,7 +135,7 @@ object PolyCollision:
       i += 1
     lower
 
-  private def projectMax(p: ConvexPolygon, ax: Double, ay: Double): Double =
+  private def projectMaxOf(p: ConvexPolygon, ax: Double, ay: Double): Double =
     var upper = Double.NegativeInfinity
     var i = 0
     while i < p.vertexCount do

@@ -13,6 +13,9 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   private val localY = localVertices.map(_.y).toArray
   private val worldX = new Array[Double](count)
   private val worldY = new Array[Double](count)
+  // Outward unit side normals, world frame: the SAT reads each several times per test.
+  private val normalX = new Array[Double](count)
+  private val normalY = new Array[Double](count)
   private var boxMinX, boxMinY, boxMaxX, boxMaxY = 0.0
   private var current = false
 
@@ -36,6 +39,15 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
         if vy < boxMinY then boxMinY = vy
         if vy > boxMaxY then boxMaxY = vy
         i += 1
+      // The same expressions as ConvexPolygon.sideNormalX/Y, evaluated once per move.
+      i = 0
+      while i < count do
+        val j = if i + 1 == count then 0 else i + 1
+        val dx = worldX(j) - worldX(i)
+        val dy = worldY(j) - worldY(i)
+        normalX(i) = dy / math.sqrt(dx * dx + dy * dy)
+        normalY(i) = -dx / math.sqrt(dx * dx + dy * dy)
+        i += 1
       current = true
 
   def vertices: IndexedSeq[Vector2D] =
@@ -45,6 +57,8 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   override private[sims] def vertexCount: Int = count
   override private[sims] def vertexX(i: Int): Double = { refresh(); worldX(i) }
   override private[sims] def vertexY(i: Int): Double = { refresh(); worldY(i) }
+  override private[sims] def sideNormalX(i: Int): Double = { refresh(); normalX(i) }
+  override private[sims] def sideNormalY(i: Int): Double = { refresh(); normalY(i) }
 
   override def project(axis: Vector2D): Projection =
     refresh()

@@ -55,3 +55,17 @@ trait ConvexPolygon:
 
   /** y coordinate of vertex i (hot-loop access). */
   private[sims] def vertexY(i: Int): Double = vertices(i).y
+
+  /** x of the outward unit normal of side i (from vertex i to i + 1): the side's right normal. */
+  private[sims] def sideNormalX(i: Int): Double =
+    val j = if i + 1 == vertexCount then 0 else i + 1
+    val dx = vertexX(j) - vertexX(i)
+    val dy = vertexY(j) - vertexY(i)
+    dy / math.sqrt(dx * dx + dy * dy)
+
+  /** y of the outward unit normal of side i. */
+  private[sims] def sideNormalY(i: Int): Double =
+    val j = if i + 1 == vertexCount then 0 else i + 1
+    val dx = vertexX(j) - vertexX(i)
+    val dy = vertexY(j) - vertexY(i)
+    -dx / math.sqrt(dx * dx + dy * dy)
