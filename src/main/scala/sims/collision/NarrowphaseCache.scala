@@ -84,9 +84,10 @@ private[collision] final class NarrowphaseCache:
           case PolygonPolygon =>
             val p1 = a.asInstanceOf[Polygon]
             val p2 = b.asInstanceOf[Polygon]
-            if !PolyCollision.colliding(p1, p2) then null
+            val axis = PolyCollision.referenceAxisIfColliding(p1, p2)
+            if axis < 0 then null
             else if slot.poly == null then { slot.poly = PolyCollision(p1, p2); slot.poly }
-            else { slot.poly.compute(p1, p2); slot.poly }
+            else { slot.poly.compute(p1, p2, axis); slot.poly }
           case PolygonCircle => polygonCircle(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Circle])
           case _ => polygonCircle(slot, b.asInstanceOf[Polygon], a.asInstanceOf[Circle])
         slot.doneFirst = a

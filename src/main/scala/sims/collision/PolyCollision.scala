@@ -20,8 +20,11 @@ final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPo
 
   /** Recomputes this collision for the pair (first, second) from their current positions. */
   private[collision] def compute(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon): Unit =
+    compute(first, second, PolyCollision.referenceAxis(first, second))
+
+  /** `compute` with the reference axis already found (by `referenceAxisIfColliding`). */
+  private[collision] def compute(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon, axis: Int): Unit =
     armsCurrent = false
-    val axis = PolyCollision.referenceAxis(first, second)
     val secondIsReference = axis < second.vertexCount
     reference = if secondIsReference then second else first
     incident = if secondIsReference then first else second
@@ -109,6 +112,35 @@ object PolyCollision:
     var i = 0
     while i < p.vertexCount do { sum += p.vertexY(i); i += 1 }
     sum / p.vertexCount
+
+  /** `colliding(first, second)` and `referenceAxis(first, second)` in one pass: both go through
+    * the same axes in the same order (the second polygon's side normals, then the first's), so
+    * each axis' projections are computed once. -1 when some axis separates the polygons (the
+    * first one `colliding` would stop at), else the reference axis.
+    */
+  private[collision] def referenceAxisIfColliding(first: ConvexPolygon, second: ConvexPolygon): Int =
+    val total = second.vertexCount + first.vertexCount
+    var best = -1
+    var bestOverlap = Double.PositiveInfinity
+    var separated = false
+    var k = 0
+    while !separated && k < total do
+      val owner = if k < second.vertexCount then second else first
+      val side = sideOf(k, second)
+      val nx = sideNormalX(owner, side)
+      val ny = sideNormalY(owner, side)
+      val lower1 = projectMin(first, nx, ny)
+      val upper1 = projectMax(first, nx, ny)
+      val lower2 = projectMin(second, nx, ny)
+      val upper2 = projectMax(second, nx, ny)
+      if upper1 < lower2 || upper2 < lower1 then separated = true
+      else
+        val overlap = sims.geometry.Projection.overlap(lower1, upper1, lower2, upper2)
+        if overlap > 0 && overlap < bestOverlap then
+          best = k
+          bestOverlap = overlap
+      k += 1
+    if separated then -1 else if best < 0 then 0 else best
 
   private def sideOf(k: Int, second: ConvexPolygon): Int =
     if k < second.vertexCount then k else k - second.vertexCount
