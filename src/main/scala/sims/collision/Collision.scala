@@ -74,7 +74,14 @@ abstract class Collision extends Constraint:
   /** Set by the built-in kinds whenever they recompute the points. */
   private[collision] var armsCurrent = false
 
-  private def prepareArms(b1: sims.dynamics.Body, b2: sims.dynamics.Body): Unit =
+  // The shapes the arms were computed for: they change only when the points are recomputed.
+  private var armsShape1, armsShape2: Shape = null
+
+  private def prepareArms(s1: Shape, s2: Shape): Unit =
+    armsShape1 = s1
+    armsShape2 = s2
+    val b1 = s1.body
+    val b2 = s2.body
     if arms.length < 6 * pointCount then arms = new Array[Double](6 * math.max(pointCount, 2))
     val nx = normalX
     val ny = normalY
@@ -96,13 +103,17 @@ abstract class Collision extends Constraint:
 
   def correctVelocity(h: Double): Unit =
     load()
-    val b1 = shape1.body
-    val b2 = shape2.body
-    if !armsCurrent || armsMoves1 != b1.moves || armsMoves2 != b2.moves then prepareArms(b1, b2)
+    if !armsCurrent then prepareArms(shape1, shape2)
+    else if armsMoves1 != armsShape1.body.moves || armsMoves2 != armsShape2.body.moves then
+      prepareArms(armsShape1, armsShape2)
+    val s1 = armsShape1
+    val s2 = armsShape2
+    val b1 = s1.body
+    val b2 = s2.body
     val nx = normalX
     val ny = normalY
-    val e = shape1.restitution * shape2.restitution
-    val mu = shape1.friction * shape2.friction
+    val e = s1.restitution * s2.restitution
+    val mu = s1.friction * s2.friction
     val a = arms
     var i = 0
     while i < pointCount do

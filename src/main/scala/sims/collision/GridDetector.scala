@@ -87,6 +87,9 @@ class GridDetector(val world: World) extends Detector:
   // Candidates of the shape being placed: their order keys and shape indices.
   private var groupKeys = new Array[Long](16)
   private var groupSize = 0
+  // The coarse cells of the shape being placed: first column and row, number of rows.
+  private var groupX0, groupY0 = 0
+  private var groupRows = 0L
 
   /** Broadphase: fills `pairs` with every candidate pair once.
     *
@@ -133,13 +136,18 @@ class GridDetector(val world: World) extends Detector:
     val fine =
       val mean = if counted == 0 then side else extentSum / counted * GridDetector.FineCellPerExtent
       if mean > 0 && mean <= side then mean else side
+    // Fine cells by multiplication: any consistent cell function serves the internal grid.
+    val perFine = 1 / fine
     grid.reset(n)
     i = 0
     while i < n do
       if placement(i) == GridDetector.Fine then
-        val x0 = GridDetector.cell(boxMinX(i), fine); val x1 = GridDetector.cell(boxMaxX(i), fine)
-        val y0 = GridDetector.cell(boxMinY(i), fine); val y1 = GridDetector.cell(boxMaxY(i), fine)
+        val x0 = GridDetector.fineCell(boxMinX(i), perFine); val x1 = GridDetector.fineCell(boxMaxX(i), perFine)
+        val y0 = GridDetector.fineCell(boxMinY(i), perFine); val y1 = GridDetector.fineCell(boxMaxY(i), perFine)
         groupSize = 0
+        groupX0 = GridDetector.cell(boxMinX(i), side)
+        groupY0 = GridDetector.cell(boxMinY(i), side)
+        groupRows = GridDetector.cell(boxMaxY(i), side).toLong - groupY0 + 1
         if (x1.toLong - x0 + 1) * (y1.toLong - y0 + 1) > GridDetector.FineShapeCells then
           // Too big for the fine grid: tested against every earlier shape instead.
           placement(i) = GridDetector.Wide
@@ -161,8 +169,8 @@ class GridDetector(val world: World) extends Detector:
               while entry >= 0 do
                 val j = grid.shapeOf(entry)
                 // Each pair once: in the fine cell holding the corner of the AABBs' overlap.
-                if GridDetector.cell(math.max(boxMinX(j), boxMinX(i)), fine) == cx &&
-                    GridDetector.cell(math.max(boxMinY(j), boxMinY(i)), fine) == cy &&
+                if GridDetector.fineCell(math.max(boxMinX(j), boxMinX(i)), perFine) == cx &&
+                    GridDetector.fineCell(math.max(boxMinY(j), boxMinY(i)), perFine) == cy &&
                     candidates(j, i, shapes) then
                   addToGroup(j, i, side)
                 entry = grid.nextEntry(entry)
@@ -207,12 +215,9 @@ class GridDetector(val world: World) extends Detector:
     * the coarse cell holding the overlap's corner among i's cells, then the later shape first.
     */
   private def addToGroup(j: Int, i: Int, side: Double): Unit =
-    val x0 = GridDetector.cell(boxMinX(i), side)
-    val y0 = GridDetector.cell(boxMinY(i), side)
-    val rows = GridDetector.cell(boxMaxY(i), side).toLong - y0 + 1
     val cx = GridDetector.cell(math.max(boxMinX(j), boxMinX(i)), side)
     val cy = GridDetector.cell(math.max(boxMinY(j), boxMinY(i)), side)
-    val rank = (cx.toLong - x0) * rows + (cy.toLong - y0)
+    val rank = (cx.toLong - groupX0) * groupRows + (cy.toLong - groupY0)
     val key = (rank << 32) | (Int.MaxValue - j).toLong
     if groupSize == groupKeys.length then groupKeys = java.util.Arrays.copyOf(groupKeys, 2 * groupSize)
     var g = groupSize
@@ -245,6 +250,11 @@ object GridDetector:
   /** Grid cell index of a coordinate: floor(coordinate / side), clamped to the Int range. */
   private[collision] def cell(coordinate: Double, side: Double): Int =
     val c = math.floor(coordinate / side)
+    if c < Int.MinValue then Int.MinValue else if c > Int.MaxValue then Int.MaxValue else c.toInt
+
+  /** Cell of the internal fine grid: floor(coordinate * perSide), clamped to the Int range. */
+  private inline def fineCell(coordinate: Double, perSide: Double): Int =
+    val c = math.floor(coordinate * perSide)
     if c < Int.MinValue then Int.MinValue else if c > Int.MaxValue then Int.MaxValue else c.toInt
 
   /** The pair filters of the broadphase (apart from sharing a cell). */
