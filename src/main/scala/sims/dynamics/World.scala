@@ -250,4 +250,5 @@ object World:
   /** Linear (m/s) and angular (rad/s) speeds below this become exactly 0 in phase 5. */
   val SpeedThreshold: Double = 0.0001
 
-  private inline def finite(d: Double): Boolean = !d.isNaN && !d.isInfinite
+  // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
+  private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
