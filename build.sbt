@@ -80,7 +80,7 @@ lazy val docs = (project in file("target/mdoc-project"))
 
 /** Benchmarks (JMH) of SiMS against jBox2D and dyn4j; the peers are bench-only dependencies. */
 lazy val bench = (project in file("bench"))
-  .dependsOn(root)
+  .dependsOn(root, examples) // the examples' BallStack scene is benchmarked as it is
   .enablePlugins(JmhPlugin)
   .settings(
     name := "sims-bench",

@@ -27,7 +27,7 @@ object Sanity:
       case "pyramid-20" => pyramid(states)
       case "chain-100" => chain(built.jointLengths)
       case "ballstack" =>
-        inBox(states, Scenes.BallStack.Radius, 1.5, 4.0)
+        inBox(states, Scenes.BallStack.Radius, Scenes.BallStack.HalfWidth, Scenes.BallStack.Height)
       case other =>
         val n = Scenes.ballpitSize(other).get
         inBox(states, Scenes.Ballpit.Radius, Scenes.Ballpit.HalfWidth, Scenes.Ballpit.wallHeight(n))

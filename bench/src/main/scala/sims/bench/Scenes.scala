@@ -110,28 +110,17 @@ object Scenes:
     /** Height of the chain, m. */
     val y: Double = 10.0
 
-  /** BallStack, the original SiMS example: ground, two walls, 52 balls of radius 0.2 (SiMS only,
-    * with its default materials). The same layout as the examples' BallStack scene.
+  /** BallStack, the original SiMS example (SiMS only): the examples' scene
+    * `sims.examples.scenes.BallStack` itself (ground, walls 3.5 m apart inside, 52 balls of
+    * radius 0.2, SiMS's default materials). The numbers here are for the sanity check.
     */
   object BallStack:
-    /** Number of balls. */
-    val Balls: Int = 52
     /** Ball radius, m. */
     val Radius: Double = 0.2
-    /** Balls per row. */
-    val PerRow: Int = 6
-    /** Ground and walls. */
-    val statics: Seq[StaticBox] =
-      Seq(StaticBox(0, -0.5, 3, 0.5), StaticBox(-1.75, 2, 0.25, 2), StaticBox(1.75, 2, 0.25, 2))
-
-    /** Initial centres (x0, y0, ...). */
-    def centres: Array[Double] =
-      val out = new Array[Double](2 * Balls)
-      for i <- 0 until Balls do
-        val row = i / PerRow
-        out(2 * i) = -1.2 + (i % PerRow) * 0.45 + (if row % 2 == 0 then 0 else 0.12)
-        out(2 * i + 1) = 0.3 + row * 0.5
-      out
+    /** Half the inner width between the walls, m. */
+    val HalfWidth: Double = 1.5
+    /** Height of the walls, m. */
+    val Height: Double = 4.0
 
   /** The scene names: ballpit-N for each size, pyramid-20, chain-100, ballstack. */
   val names: Seq[String] = Ballpit.Sizes.map(n => s"ballpit-$n") ++ Seq("pyramid-20", "chain-100", "ballstack")

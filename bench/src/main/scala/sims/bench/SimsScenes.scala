@@ -24,21 +24,20 @@ object SimsScenes:
     world.gravity = Vector2D(0, Scenes.Gravity)
     world
 
-  private def material(s: Shape, original: Boolean): s.type =
-    if !original then
-      s.friction = ShapeFriction
-      s.restitution = Scenes.Restitution
+  private def material(s: Shape): s.type =
+    s.friction = ShapeFriction
+    s.restitution = Scenes.Restitution
     s
 
-  private def staticBox(b: Scenes.StaticBox, original: Boolean = false): Body =
-    val r = material(Rectangle(b.halfWidth, b.halfHeight, Scenes.Density), original)
+  private def staticBox(b: Scenes.StaticBox): Body =
+    val r = material(Rectangle(b.halfWidth, b.halfHeight, Scenes.Density))
     r.pos = Vector2D(b.x, b.y)
     val body = r.asBody
     body.fixed = true
     body
 
-  private def ball(x: Double, y: Double, radius: Double, original: Boolean = false): Body =
-    val c = material(Circle(radius, Scenes.Density), original)
+  private def ball(x: Double, y: Double, radius: Double): Body =
+    val c = material(Circle(radius, Scenes.Density))
     c.pos = Vector2D(x, y)
     c.asBody
 
@@ -50,7 +49,7 @@ object SimsScenes:
         world += staticBox(Scenes.Pyramid.ground)
         val c = Scenes.Pyramid.centres
         for i <- 0 until c.length / 2 yield
-          val r = material(Rectangle(Scenes.Pyramid.HalfSide, Scenes.Pyramid.HalfSide, Scenes.Density), false)
+          val r = material(Rectangle(Scenes.Pyramid.HalfSide, Scenes.Pyramid.HalfSide, Scenes.Density))
           r.pos = Vector2D(c(2 * i), c(2 * i + 1))
           val b = r.asBody
           world += b
@@ -66,13 +65,8 @@ object SimsScenes:
           world += DistanceJoint(links(i - 1), links(i - 1).pos, links(i), links(i).pos)
         links.tail
       case "ballstack" =>
-        // The original's scene keeps SiMS's default materials.
-        Scenes.BallStack.statics.foreach(s => world += staticBox(s, original = true))
-        val c = Scenes.BallStack.centres
-        for i <- 0 until c.length / 2 yield
-          val b = ball(c(2 * i), c(2 * i + 1), Scenes.BallStack.Radius, original = true)
-          world += b
-          b
+        val stack = sims.examples.scenes.BallStack.build().world
+        return Built(stack, stack.bodies.filterNot(_.fixed).toIndexedSeq)
       case other =>
         val n = Scenes.ballpitSize(other).getOrElse(throw IllegalArgumentException(s"unknown scene $other"))
         Scenes.Ballpit.container(n).foreach(s => world += staticBox(s))
