@@ -16,7 +16,7 @@ lazy val testDependencies = Seq(
 
 /** The library: only the Scala standard library at run time. */
 lazy val root = (project in file("."))
-  .aggregate(LocalProject("examples"), LocalProject("docs")) // `./sbt test` runs them too
+  .aggregate(LocalProject("examples"), LocalProject("docs"), LocalProject("bench")) // `./sbt test` builds and runs them too
   .settings(
     name := "sims",
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
