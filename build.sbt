@@ -34,7 +34,7 @@ lazy val root = (project in file("."))
           <name>The SiMS for Scala contributors</name>
         </developer>
       </developers>,
-    Compile / doc / scalacOptions ++= Seq("-project", "SiMS", "-doc-root-content", "docs/api-overview.md"),
+    Compile / doc / scalacOptions ++= Seq("-doc-root-content", "docs/api-overview.md"),
     libraryDependencies ++= testDependencies,
     Test / parallelExecution := false,
     coverageMinimumStmtTotal := 90,

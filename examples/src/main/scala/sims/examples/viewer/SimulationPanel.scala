@@ -8,7 +8,8 @@ import sims.dynamics.joints.MouseJoint
 import sims.examples.scenes.{Scene, Staged}
 
 /** The viewer's drawing area: owns the running scene, steps it on request and paints it with
-  * the shared [[Renderer]]. Dragging a free body pulls it with a [[MouseJoint]]; dragging
+  * the shared [[sims.examples.render.Renderer]]. Dragging a free body pulls it with a
+  * [[sims.dynamics.joints.MouseJoint]]; dragging
   * empty space pans the view; the mouse wheel zooms about the pointer. It needs no window, so
   * tests paint it off-screen.
   */
