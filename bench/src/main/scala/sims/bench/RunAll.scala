@@ -34,7 +34,9 @@ object RunAll:
         case "--warmup" => warmup = it.next().toInt
         case "--out" => out = Some(it.next())
         case scene => scenes += scene
-    val chosen = Some(scenes.result()).filter(_.nonEmpty).getOrElse(Scenes.names)
+    // Cheap scenes first, so an interrupted run still has them.
+    val chosen = Some(scenes.result()).filter(_.nonEmpty)
+      .getOrElse(Scenes.names.sortBy(n => Scenes.ballpitSize(n).getOrElse(0)))
     val sanityFile = Files.createTempFile("sims-bench-sanity", ".tsv")
     val started = System.nanoTime()
     val results = chosen.flatMap { scene =>
