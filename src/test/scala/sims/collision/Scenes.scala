@@ -19,18 +19,25 @@ object Scenes:
     c.pos = Vector2D(x, height + radius)
     c.asBody
 
+  /** A world with a fixed ground (top face at y = 0, `halfWidth` wide each side) and two
+    * fixed walls 0.5 m thick and `height` high whose inner faces are `inner` from the middle.
+    */
+  def container(halfWidth: Double, inner: Double, height: Double): World =
+    val world = World()
+    world += ground(halfWidth)
+    for x <- Seq(-(inner + 0.25), inner + 0.25) do
+      val wall = Rectangle(0.25, height / 2, 1)
+      wall.pos = Vector2D(x, height / 2)
+      val b = wall.asBody
+      b.fixed = true
+      world += b
+    world
+
   /** The original's BallStack: a fixed ground and two walls 4 m apart inside, and balls
     * poured in rows above them (the walls reach 4 m up).
     */
   def ballStack(balls: Int): (World, Seq[Body]) =
-    val world = World()
-    world += ground(3)
-    for x <- Seq(-2.25, 2.25) do
-      val wall = Rectangle(0.25, 2, 1)
-      wall.pos = Vector2D(x, 2)
-      val b = wall.asBody
-      b.fixed = true
-      world += b
+    val world = container(halfWidth = 3, inner = 2, height = 4)
     val bodies = for i <- 0 until balls yield
       val b = ball(0.15, -1.6 + (i % 9) * 0.4 + (i / 9 % 2) * 0.1, 0.3 + (i / 9) * 0.45)
       world += b

@@ -37,14 +37,7 @@ class StabilitySpec extends AnyFunSuite with Matchers:
     // The faithful solver (no warm starting, full overlap correction at every contact point)
     // does not keep a tall stack standing: the boxes topple within seconds and settle on the
     // floor. This test holds the laws; the toppling is reported, not hidden.
-    val world = World()
-    world += Scenes.ground(5)
-    for x <- Seq(-4.25, 4.25) do
-      val wall = Rectangle(0.25, 3, 1)
-      wall.pos = Vector2D(x, 3)
-      val b = wall.asBody
-      b.fixed = true
-      world += b
+    val world = Scenes.container(halfWidth = 5, inner = 4, height = 6)
     val boxes = for i <- 0 until 10 yield
       val r = Rectangle(0.3, 0.2, 1)
       r.pos = Vector2D(0, 0.21 + i * 0.41) // 1 cm apart: see NarrowphaseSpec on exactly touching boxes
