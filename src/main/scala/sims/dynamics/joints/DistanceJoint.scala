@@ -44,39 +44,79 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
   def v: Vector2D = node2.velocityOfPoint(connection2) - node1.velocityOfPoint(connection1)
 
   /** Inverse of J M^-1 J^T for direction u and arms r1, r2; 0 when both bodies are fixed. */
-  private def effectiveMass(u: Vector2D, r1: Vector2D, r2: Vector2D): Double =
-    val cr1 = r1 cross u
-    val cr2 = r2 cross u
-    val invMass = 1 / node1.mass + 1 / node1.I * cr1 * cr1 + 1 / node2.mass + 1 / node2.I * cr2 * cr2
+  private def effectiveMass(ux: Double, uy: Double, r1x: Double, r1y: Double, r2x: Double, r2y: Double): Double =
+    // Anchors at the centres (arms exactly 0) leave only the inverse masses: the same sum,
+    // without waiting for u.
+    if r1x == 0 && r1y == 0 && r2x == 0 && r2y == 0 then centredMass
+    else
+      val cr1 = r1x * uy - r1y * ux
+      val cr2 = r2x * uy - r2y * ux
+      val invMass = node1.invMass + node1.invI * cr1 * cr1 + node2.invMass + node2.invI * cr2 * cr2
+      if invMass == 0.0 then 0.0 else 1 / invMass
+
+  /** The effective mass with both arms 0: (1/m1 + 1/m2)^-1, 0 when both bodies are fixed. */
+  private def centredMass: Double =
+    val invMass = node1.invMass + node2.invMass
     if invMass == 0.0 then 0.0 else 1 / invMass
 
+  // The solvers work on doubles, with the same expressions (and so the same results) as the
+  // vector formulas in the class comment; connection points are centre plus arm.
+
+  // What velocity correction needs depends only on positions, which phase 4 does not change:
+  // u, the arms and m are computed once per step (when a body has moved), not per iteration.
+  private var ux, uy, r1x, r1y, r2x, r2y, m = 0.0
+  private var apart = false // false when the connection points coincide
+  private var moves1, moves2 = -1L
+
+  private def prepareVelocity(): Unit =
+    a1.update()
+    a2.update()
+    val c1x = node1.x + a1.armX; val c1y = node1.y + a1.armY
+    val c2x = node2.x + a2.armX; val c2y = node2.y + a2.armY
+    val xx = c2x - c1x
+    val xy = c2y - c1y
+    val length = math.sqrt(xx * xx + xy * xy)
+    apart = length != 0 // coincident points give no direction to correct along
+    if apart then
+      ux = xx / length
+      uy = xy / length
+      r1x = c1x - node1.x; r1y = c1y - node1.y
+      r2x = c2x - node2.x; r2y = c2y - node2.y
+      m = effectiveMass(ux, uy, r1x, r1y, r2x, r2y)
+    moves1 = node1.moves
+    moves2 = node2.moves
+
   def correctVelocity(h: Double): Unit =
-    val c1 = connection1
-    val c2 = connection2
-    val x = c2 - c1
-    if !x.isNull then // coincident points give no direction to correct along
-      val u = x.unit
-      val m = effectiveMass(u, c1 - node1.pos, c2 - node2.pos)
-      val v = node2.velocityOfPoint(c2) - node1.velocityOfPoint(c1)
-      val lambda = -m * (u dot v)
-      val impulse = u * lambda
-      node1.applyImpulse(-impulse, c1)
-      node2.applyImpulse(impulse, c2)
+    if moves1 != node1.moves || moves2 != node2.moves then prepareVelocity()
+    if apart then
+      // Relative velocity of the connection points: v + w x r of each body.
+      val vx = (node2.vx - node2.w * r2y) - (node1.vx - node1.w * r1y)
+      val vy = (node2.vy + node2.w * r2x) - (node1.vy + node1.w * r1x)
+      val lambda = -m * (ux * vx + uy * vy)
+      val impulseX = ux * lambda
+      val impulseY = uy * lambda
+      node1.impulseAt(-impulseX, -impulseY, r1x, r1y)
+      node2.impulseAt(impulseX, impulseY, r2x, r2y)
 
   def correctPosition(h: Double): Unit =
-    val c1 = connection1
-    val c2 = connection2
-    val x = c2 - c1
-    if !x.isNull then
-      val u = x.unit
-      val r1 = c1 - node1.pos
-      val r2 = c2 - node2.pos
-      val m = effectiveMass(u, r1, r2)
-      val C = x.length - distance
-      val P = -u * m * C
-      node1.pos = node1.pos - P / node1.mass
-      node2.pos = node2.pos + P / node2.mass
-      node1.rotation = node1.rotation - (r1 cross P) / node1.I
-      node2.rotation = node2.rotation + (r2 cross P) / node2.I
+    a1.update()
+    a2.update()
+    val c1x = node1.x + a1.armX; val c1y = node1.y + a1.armY
+    val c2x = node2.x + a2.armX; val c2y = node2.y + a2.armY
+    val xx = c2x - c1x
+    val xy = c2y - c1y
+    val length = math.sqrt(xx * xx + xy * xy)
+    if length != 0 then
+      val ux = xx / length
+      val uy = xy / length
+      val r1x = c1x - node1.x; val r1y = c1y - node1.y
+      val r2x = c2x - node2.x; val r2y = c2y - node2.y
+      val m = effectiveMass(ux, uy, r1x, r1y, r2x, r2y)
+      val c = length - distance
+      val px = -ux * m * c
+      val py = -uy * m * c
+      // Division by the mass (infinite when fixed) as in the formula, not multiplication by invMass.
+      node1.displace(-(px / node1.mass), -(py / node1.mass), -((r1x * py - r1y * px) / node1.I))
+      node2.displace(px / node2.mass, py / node2.mass, (r2x * py - r2y * px) / node2.I)
 
   override def toString: String = s"DistanceJoint($node1, $node2, distance = $distance)"
