@@ -13,6 +13,7 @@ import sims.geometry.Vector2D
 final class CircleCollision(circle1: Circle, circle2: Circle) extends Collision:
   private var first: Circle = circle1
   private var second: Circle = circle2
+  override private[sims] def solvedInPlace: Boolean = true
   ensureCapacity(1)
   compute(circle1, circle2)
 
@@ -25,7 +26,6 @@ final class CircleCollision(circle1: Circle, circle2: Circle) extends Collision:
 
   /** `compute` with the distance of the centres already known (from the test). */
   private[collision] def compute(c1: Circle, c2: Circle, distance: Double): Unit =
-    armsCurrent = false
     first = c1
     second = c2
     normalX = if distance == 0 then 0.0 else (c2.x - c1.x) / distance

@@ -44,7 +44,7 @@ abstract class Collision extends Constraint:
   private[sims] final def pointY(i: Int): Double = { load(); pointYs(i) }
 
   /** Loads the hot copy from `normal` and `points` unless a built-in kind wrote it. */
-  private def load(): Unit =
+  private[collision] def load(): Unit =
     if pointCount < 0 then
       val n = normal
       normalX = n.x
@@ -65,78 +65,28 @@ abstract class Collision extends Constraint:
     load()
     scala.collection.immutable.ArraySeq.tabulate(pointCount)(i => Vector2D(pointXs(i), pointYs(i)))
 
-  // Per point, what velocity correction needs that depends only on positions: the arms and
-  // the effective masses along n and t. Positions do not change during phase 4, so these are
-  // computed once per step (when the bodies have moved or the points were recomputed) instead
-  // of in each of the iterations; the values are the same either way.
-  private var arms = Collision.NoPoints // r1x, r1y, r2x, r2y, m, mT per point
-  private var armsMoves1, armsMoves2 = -1L
-  /** Set by the built-in kinds whenever they recompute the points. */
-  private[collision] var armsCurrent = false
+  /** True for the built-in kinds, whose points the world's contact solver reads directly
+    * instead of calling `correctVelocity` (which they do not override).
+    */
+  private[sims] def solvedInPlace: Boolean = false
 
-  // The shapes the arms were computed for: they change only when the points are recomputed.
-  private var armsShape1, armsShape2: Shape = null
-
-  private def prepareArms(s1: Shape, s2: Shape): Unit =
-    armsShape1 = s1
-    armsShape2 = s2
-    val b1 = s1.body
-    val b2 = s2.body
-    if arms.length < 6 * pointCount then arms = new Array[Double](6 * math.max(pointCount, 2))
+  def correctVelocity(h: Double): Unit =
+    load()
+    val b1 = shape1.body
+    val b2 = shape2.body
     val nx = normalX
     val ny = normalY
     val tx = -ny
     val ty = nx
+    val restitutionFactor = 1 + shape1.restitution * shape2.restitution
+    val mu = shape1.friction * shape2.friction
     var i = 0
     while i < pointCount do
-      val px = pointXs(i)
-      val py = pointYs(i)
-      val r1x = px - b1.x; val r1y = py - b1.y
-      val r2x = px - b2.x; val r2y = py - b2.y
-      arms(6 * i) = r1x; arms(6 * i + 1) = r1y; arms(6 * i + 2) = r2x; arms(6 * i + 3) = r2y
-      arms(6 * i + 4) = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
-      arms(6 * i + 5) = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
-      i += 1
-    armsMoves1 = b1.moves
-    armsMoves2 = b2.moves
-    armsCurrent = true
-
-  def correctVelocity(h: Double): Unit =
-    load()
-    if !armsCurrent then prepareArms(shape1, shape2)
-    else if armsMoves1 != armsShape1.body.moves || armsMoves2 != armsShape2.body.moves then
-      prepareArms(armsShape1, armsShape2)
-    val s1 = armsShape1
-    val s2 = armsShape2
-    val b1 = s1.body
-    val b2 = s2.body
-    val nx = normalX
-    val ny = normalY
-    val e = s1.restitution * s2.restitution
-    val mu = s1.friction * s2.friction
-    val a = arms
-    var i = 0
-    while i < pointCount do
-      val r1x = a(6 * i); val r1y = a(6 * i + 1)
-      val r2x = a(6 * i + 2); val r2y = a(6 * i + 3)
-      // Normal part: an inequality constraint, corrected only when the points approach.
-      val vn = Collision.relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
-      val cDot = vn * (1 + e)
-      var lambda = 0.0
-      if cDot <= 0 then
-        val m = a(6 * i + 4)
-        lambda = -m * cDot
-        b1.impulseAt(-nx * lambda, -ny * lambda, r1x, r1y)
-        b2.impulseAt(nx * lambda, ny * lambda, r2x, r2y)
-      // Friction along the tangent, bounded by mu times this correction's normal impulse.
-      val tx = -ny
-      val ty = nx
-      val vt = Collision.relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
-      val mT = a(6 * i + 5)
-      val bound = mu * math.abs(lambda)
-      val lambdaT = math.max(-bound, math.min(bound, -mT * vt))
-      b1.impulseAt(-tx * lambdaT, -ty * lambdaT, r1x, r1y)
-      b2.impulseAt(tx * lambdaT, ty * lambdaT, r2x, r2y)
+      val r1x = pointXs(i) - b1.x; val r1y = pointYs(i) - b1.y
+      val r2x = pointXs(i) - b2.x; val r2y = pointYs(i) - b2.y
+      Collision.correctVelocityAt(b1, b2, r1x, r1y, r2x, r2y, nx, ny, restitutionFactor, mu,
+        Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny),
+        Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, tx, ty))
       i += 1
 
   def correctPosition(h: Double): Unit =
@@ -171,6 +121,29 @@ object Collision:
   /** Overlap tolerated by position correction, m: deeper overlap is corrected. */
   val ToleratedOverlap: Double = 0.01
 
+  /** Velocity correction at one contact point (arms r1, r2, normal n, restitution factor 1 + e,
+    * friction mu, effective masses m along n and mT along t = n.leftNormal).
+    */
+  private[collision] inline def correctVelocityAt(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
+      r1x: Double, r1y: Double, r2x: Double, r2y: Double, nx: Double, ny: Double,
+      restitutionFactor: Double, mu: Double, m: Double, mT: Double): Unit =
+    // Normal part: an inequality constraint, corrected only when the points approach.
+    val vn = relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+    val cDot = vn * restitutionFactor
+    var lambda = 0.0
+    if cDot <= 0 then
+      lambda = -m * cDot
+      b1.impulseAt(-nx * lambda, -ny * lambda, r1x, r1y)
+      b2.impulseAt(nx * lambda, ny * lambda, r2x, r2y)
+    // Friction along the tangent, bounded by mu times this correction's normal impulse.
+    val tx = -ny
+    val ty = nx
+    val vt = relativeVelocity(b1, b2, r1x, r1y, r2x, r2y, tx, ty)
+    val bound = mu * math.abs(lambda)
+    val lambdaT = math.max(-bound, math.min(bound, -mT * vt))
+    b1.impulseAt(-tx * lambdaT, -ty * lambdaT, r1x, r1y)
+    b2.impulseAt(tx * lambdaT, ty * lambdaT, r2x, r2y)
+
   /** (v2(p) - v1(p)) . (dx, dy) for the point at arms r1, r2. */
   private inline def relativeVelocity(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
       r1x: Double, r1y: Double, r2x: Double, r2y: Double, dx: Double, dy: Double): Double =
@@ -179,7 +152,7 @@ object Collision:
     vx * dx + vy * dy
 
   /** 1 / (1/m1 + (r1 x d)^2/I1 + 1/m2 + (r2 x d)^2/I2), 0 when both bodies are fixed. */
-  private inline def effectiveMass(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
+  private[collision] inline def effectiveMass(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
       r1x: Double, r1y: Double, r2x: Double, r2y: Double, dx: Double, dy: Double): Double =
     val cr1 = r1x * dy - r1y * dx
     val cr2 = r2x * dy - r2y * dx

@@ -83,6 +83,10 @@ class GridDetector(val world: World) extends Detector:
   private var boxMinX, boxMinY, boxMaxX, boxMaxY = new Array[Double](0)
   /** Per shape: 0 in the fine grid, 1 tested against all earlier shapes, 2 large, 3 not collidable. */
   private var placement = new Array[Byte](0)
+  // Per shape: the coarse and fine cells of its AABB's lower-left corner. Cell functions are
+  // monotonic, so the cell of the corner of two AABBs' overlap, cell(max(a, b)), is
+  // max(cell(a), cell(b)): computed once per shape instead of once per candidate.
+  private var coarseX0, coarseY0, fineX0, fineY0 = new Array[Int](0)
   private val wide = ArrayBuffer.empty[Int]
   // Candidates of the shape being placed: their order keys and shape indices.
   private var groupKeys = new Array[Long](16)
@@ -109,6 +113,8 @@ class GridDetector(val world: World) extends Detector:
       boxMinX = new Array[Double](capacity); boxMinY = new Array[Double](capacity)
       boxMaxX = new Array[Double](capacity); boxMaxY = new Array[Double](capacity)
       placement = new Array[Byte](capacity)
+      coarseX0 = new Array[Int](capacity); coarseY0 = new Array[Int](capacity)
+      fineX0 = new Array[Int](capacity); fineY0 = new Array[Int](capacity)
     val side = _gridSide
     val large = largeShapes
     large.clear()
@@ -123,8 +129,10 @@ class GridDetector(val world: World) extends Detector:
       else
         val x0 = s.minX; val y0 = s.minY; val x1 = s.maxX; val y1 = s.maxY
         boxMinX(i) = x0; boxMinY(i) = y0; boxMaxX(i) = x1; boxMaxY(i) = y1
-        val cells = (GridDetector.cell(x1, side).toLong - GridDetector.cell(x0, side) + 1) *
-          (GridDetector.cell(y1, side).toLong - GridDetector.cell(y0, side) + 1)
+        coarseX0(i) = GridDetector.cell(x0, side)
+        coarseY0(i) = GridDetector.cell(y0, side)
+        val cells = (GridDetector.cell(x1, side).toLong - coarseX0(i) + 1) *
+          (GridDetector.cell(y1, side).toLong - coarseY0(i) + 1)
         if cells > GridDetector.LargeShapeCells then
           placement(i) = GridDetector.Large
           large += s
@@ -144,9 +152,11 @@ class GridDetector(val world: World) extends Detector:
       if placement(i) == GridDetector.Fine then
         val x0 = GridDetector.fineCell(boxMinX(i), perFine); val x1 = GridDetector.fineCell(boxMaxX(i), perFine)
         val y0 = GridDetector.fineCell(boxMinY(i), perFine); val y1 = GridDetector.fineCell(boxMaxY(i), perFine)
+        fineX0(i) = x0
+        fineY0(i) = y0
         groupSize = 0
-        groupX0 = GridDetector.cell(boxMinX(i), side)
-        groupY0 = GridDetector.cell(boxMinY(i), side)
+        groupX0 = coarseX0(i)
+        groupY0 = coarseY0(i)
         groupRows = GridDetector.cell(boxMaxY(i), side).toLong - groupY0 + 1
         if (x1.toLong - x0 + 1) * (y1.toLong - y0 + 1) > GridDetector.FineShapeCells then
           // Too big for the fine grid: tested against every earlier shape instead.
@@ -169,8 +179,7 @@ class GridDetector(val world: World) extends Detector:
               while entry >= 0 do
                 val j = grid.shapeOf(entry)
                 // Each pair once: in the fine cell holding the corner of the AABBs' overlap.
-                if GridDetector.fineCell(math.max(boxMinX(j), boxMinX(i)), perFine) == cx &&
-                    GridDetector.fineCell(math.max(boxMinY(j), boxMinY(i)), perFine) == cy &&
+                if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy &&
                     candidates(j, i, shapes) then
                   addToGroup(j, i, side)
                 entry = grid.nextEntry(entry)
@@ -215,8 +224,8 @@ class GridDetector(val world: World) extends Detector:
     * the coarse cell holding the overlap's corner among i's cells, then the later shape first.
     */
   private def addToGroup(j: Int, i: Int, side: Double): Unit =
-    val cx = GridDetector.cell(math.max(boxMinX(j), boxMinX(i)), side)
-    val cy = GridDetector.cell(math.max(boxMinY(j), boxMinY(i)), side)
+    val cx = math.max(coarseX0(j), coarseX0(i))
+    val cy = math.max(coarseY0(j), coarseY0(i))
     val rank = (cx.toLong - groupX0) * groupRows + (cy.toLong - groupY0)
     val key = (rank << 32) | (Int.MaxValue - j).toLong
     if groupSize == groupKeys.length then groupKeys = java.util.Arrays.copyOf(groupKeys, 2 * groupSize)

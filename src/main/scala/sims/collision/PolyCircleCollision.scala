@@ -11,6 +11,7 @@ import sims.geometry.{ConvexPolygon, Segment, Vector2D}
 final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) extends Collision:
   private var reference: Shape & ConvexPolygon = polygon
   private var incident: Circle = circle
+  override private[sims] def solvedInPlace: Boolean = true
   ensureCapacity(1)
   compute(polygon, circle)
 
@@ -19,7 +20,6 @@ final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) 
 
   /** Recomputes this collision for the polygon and the circle from their current positions. */
   private[collision] def compute(polygon: Shape & ConvexPolygon, circle: Circle): Unit =
-    armsCurrent = false
     reference = polygon
     incident = circle
     val count = polygon.vertexCount

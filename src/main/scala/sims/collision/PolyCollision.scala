@@ -11,6 +11,8 @@ import sims.geometry.{ConvexPolygon, Vector2D}
   * reference, then the reference's vertices inside the incident polygon.
   */
 final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon) extends Collision:
+  override private[sims] def solvedInPlace: Boolean = true
+
   private var reference: Shape & ConvexPolygon = first
   private var incident: Shape & ConvexPolygon = second
   compute(first, second)
@@ -24,7 +26,6 @@ final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPo
 
   /** `compute` with the reference axis already found (by `referenceAxisIfColliding`). */
   private[collision] def compute(first: Shape & ConvexPolygon, second: Shape & ConvexPolygon, axis: Int): Unit =
-    armsCurrent = false
     val secondIsReference = axis < second.vertexCount
     reference = if secondIsReference then second else first
     incident = if secondIsReference then first else second

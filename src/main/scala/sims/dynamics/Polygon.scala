@@ -18,14 +18,25 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   private val normalY = new Array[Double](count)
   private var boxMinX, boxMinY, boxMaxX, boxMaxY = 0.0
   private var current = false
+  private var normalsCurrent = false
+  // Cosine and sine of the rotation they were last computed for: a move without turning
+  // (common in position correction) needs no new ones.
+  private var trigAngle = Double.NaN
+  private var cosine, sine = 0.0
 
-  override protected def moved(): Unit = current = false
+  override protected def moved(): Unit =
+    current = false
+    normalsCurrent = false
 
   /** Recomputes world vertices and bounds if the shape moved since the last call. */
   private def refresh(): Unit =
     if !current then
-      val c = math.cos(angle)
-      val s = math.sin(angle)
+      if angle != trigAngle then // NaN never equals itself: the first call computes
+        cosine = math.cos(angle)
+        sine = math.sin(angle)
+        trigAngle = angle
+      val c = cosine
+      val s = sine
       boxMinX = Double.PositiveInfinity; boxMinY = Double.PositiveInfinity
       boxMaxX = Double.NegativeInfinity; boxMaxY = Double.NegativeInfinity
       var i = 0
@@ -39,8 +50,16 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
         if vy < boxMinY then boxMinY = vy
         if vy > boxMaxY then boxMaxY = vy
         i += 1
+      current = true
+
+  /** Recomputes the side normals if the shape moved since they were last computed: only the
+    * SAT reads them, projections and bounds do not.
+    */
+  private def refreshNormals(): Unit =
+    refresh()
+    if !normalsCurrent then
       // The same expressions as ConvexPolygon.sideNormalX/Y, evaluated once per move.
-      i = 0
+      var i = 0
       while i < count do
         val j = if i + 1 == count then 0 else i + 1
         val dx = worldX(j) - worldX(i)
@@ -48,7 +67,7 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
         normalX(i) = dy / math.sqrt(dx * dx + dy * dy)
         normalY(i) = -dx / math.sqrt(dx * dx + dy * dy)
         i += 1
-      current = true
+      normalsCurrent = true
 
   def vertices: IndexedSeq[Vector2D] =
     refresh()
@@ -57,8 +76,8 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   override private[sims] def vertexCount: Int = count
   override private[sims] def vertexX(i: Int): Double = { refresh(); worldX(i) }
   override private[sims] def vertexY(i: Int): Double = { refresh(); worldY(i) }
-  override private[sims] def sideNormalX(i: Int): Double = { refresh(); normalX(i) }
-  override private[sims] def sideNormalY(i: Int): Double = { refresh(); normalY(i) }
+  override private[sims] def sideNormalX(i: Int): Double = { refreshNormals(); normalX(i) }
+  override private[sims] def sideNormalY(i: Int): Double = { refreshNormals(); normalY(i) }
 
   override def project(axis: Vector2D): Projection =
     refresh()

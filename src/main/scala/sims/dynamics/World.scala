@@ -20,6 +20,7 @@ class World:
   private var shapeArray = Array.empty[Shape]
   private var nextShapeIndex = 0
   private val beforeStep = WorldState.empty
+  private val contacts = sims.collision.ContactSolver()
 
   /** The collision detector used by `step()`. */
   val detector: Detector = GridDetector(this)
@@ -174,21 +175,17 @@ class World:
       i += 1
 
   private def correctVelocities(h: Double): Unit =
-    val collisions =
-      if enableCollisionDetection then
-        detector.detect()
-        detector.collisions
-      else Nil.toIndexedSeq
+    if enableCollisionDetection then
+      detector.detect()
+      contacts.load(detector.collisions)
+    else contacts.clear()
     var iteration = 0
     while iteration < _iterations do
       var i = 0
       while i < jointBuffer.length do
         jointBuffer(i).correctVelocity(h)
         i += 1
-      i = 0
-      while i < collisions.length do
-        collisions(i).correctVelocity(h)
-        i += 1
+      contacts.correctVelocities(h)
       iteration += 1
 
   private def integrateVelocities(h: Double): Unit =

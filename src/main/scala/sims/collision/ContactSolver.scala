@@ -1,0 +1,93 @@
+package sims.collision
+
+import sims.dynamics.Body
+
+/** The velocity iterations of phase 4 over one step's contact points, kept in flat arrays.
+  *
+  * Positions do not change during phase 4, so everything a point's correction needs apart from
+  * the velocities (the bodies, the arms r1 and r2, the effective masses along n and t, n, 1 + e
+  * and mu) is computed once per step by `load` and read from one array by each iteration,
+  * instead of being recomputed from the collision objects ten times. The corrections are
+  * `Collision.correctVelocity`'s, in the same order, so the results are the same to the bit.
+  * A collision of a user kind is corrected by its own `correctVelocity`, in its turn.
+  */
+private[sims] final class ContactSolver:
+  import ContactSolver.*
+
+  private var count = 0
+  private var body1 = new Array[Body](64)
+  private var body2 = new Array[Body](64)
+  /** Non-null at an entry that is a whole collision of a user kind, corrected by itself. */
+  private var own = new Array[Collision](64)
+  private var data = new Array[Double](64 * Stride)
+
+  /** Number of entries: contact points of the built-in kinds plus user-kind collisions. */
+  def size: Int = count
+
+  /** Takes the contact points of `collisions` for this step's velocity iterations. */
+  def load(collisions: collection.IndexedSeq[Collision]): Unit =
+    count = 0
+    var c = 0
+    while c < collisions.length do
+      val collision = collisions(c)
+      if collision.solvedInPlace then addPoints(collision)
+      else
+        ensureRoom()
+        own(count) = collision
+        body1(count) = null
+        body2(count) = null
+        count += 1
+      c += 1
+
+  /** Forgets the contacts (a step without collision detection). */
+  def clear(): Unit = count = 0
+
+  private def addPoints(c: Collision): Unit =
+    c.load()
+    val b1 = c.shape1.body
+    val b2 = c.shape2.body
+    val nx = c.normalX
+    val ny = c.normalY
+    val restitutionFactor = 1 + c.shape1.restitution * c.shape2.restitution
+    val mu = c.shape1.friction * c.shape2.friction
+    var i = 0
+    while i < c.pointCount do
+      ensureRoom()
+      val r1x = c.pointXs(i) - b1.x; val r1y = c.pointYs(i) - b1.y
+      val r2x = c.pointXs(i) - b2.x; val r2y = c.pointYs(i) - b2.y
+      val k = count * Stride
+      data(k) = r1x; data(k + 1) = r1y; data(k + 2) = r2x; data(k + 3) = r2y
+      data(k + 4) = nx; data(k + 5) = ny
+      data(k + 6) = restitutionFactor; data(k + 7) = mu
+      data(k + 8) = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+      data(k + 9) = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, -ny, nx)
+      body1(count) = b1
+      body2(count) = b2
+      own(count) = null
+      count += 1
+      i += 1
+
+  private def ensureRoom(): Unit =
+    if count == body1.length then
+      val capacity = 2 * count
+      body1 = java.util.Arrays.copyOf(body1, capacity)
+      body2 = java.util.Arrays.copyOf(body2, capacity)
+      own = java.util.Arrays.copyOf(own, capacity)
+      data = java.util.Arrays.copyOf(data, capacity * Stride)
+
+  /** One velocity iteration over all contacts, in order. */
+  def correctVelocities(h: Double): Unit =
+    val d = data
+    var e = 0
+    while e < count do
+      val b1 = body1(e)
+      if b1 == null then own(e).correctVelocity(h)
+      else
+        val k = e * Stride
+        Collision.correctVelocityAt(b1, body2(e), d(k), d(k + 1), d(k + 2), d(k + 3), d(k + 4), d(k + 5),
+          d(k + 6), d(k + 7), d(k + 8), d(k + 9))
+      e += 1
+
+private[sims] object ContactSolver:
+  /** Doubles per point: r1x, r1y, r2x, r2y, nx, ny, 1 + e, mu, m, mT. */
+  private val Stride = 10
