@@ -17,7 +17,11 @@ class World:
   private var _time = 0.0
   private val bodyBuffer = ArrayBuffer.empty[Body]
   private val jointBuffer = ArrayBuffer.empty[Joint]
+  // All shapes in joining order; the array the detector reads is rebuilt from it only when
+  // it is read after a change, so adding n bodies one by one costs O(n), not O(n^2).
+  private val shapeList = ArrayBuffer.empty[Shape]
   private var shapeArray = Array.empty[Shape]
+  private var shapesChanged = false
   private var nextShapeIndex = 0
   private val beforeStep = WorldState.empty
   private val contacts = sims.collision.ContactSolver()
@@ -61,10 +65,15 @@ class World:
   def joints: collection.IndexedSeq[Joint] = jointBuffer
 
   /** All shapes of all bodies, in the order they joined the world. */
-  def shapes: IndexedSeq[Shape] = collection.immutable.ArraySeq.unsafeWrapArray(shapeArray)
+  def shapes: IndexedSeq[Shape] = collection.immutable.ArraySeq.unsafeWrapArray(shapeBuffer)
 
   /** Shapes as an array for the detector (not to be modified). */
-  private[sims] def shapeBuffer: Array[Shape] = shapeArray
+  private[sims] def shapeBuffer: Array[Shape] =
+    // A new array each time the shapes change: views handed out by `shapes` stay as they were.
+    if shapesChanged then
+      shapeArray = shapeList.toArray
+      shapesChanged = false
+    shapeArray
 
   /** The collisions found in the last step (after its last correction), e.g. to draw them. */
   def collisions: collection.IndexedSeq[Collision] = detector.collisions
@@ -79,7 +88,8 @@ class World:
     for s <- body.shapes do
       s.worldIndex = nextShapeIndex
       nextShapeIndex += 1
-    shapeArray = shapeArray ++ body.shapes
+    shapeList ++= body.shapes
+    shapesChanged = true
     this
 
   /** Adds a joint; fails if it is already in this world. Its bodies must be in the world
@@ -98,7 +108,8 @@ class World:
       bodyBuffer.remove(i)
       body.world = null
       body.shapes.foreach(_.worldIndex = -1)
-      shapeArray = shapeArray.filterNot(_.body eq body)
+      shapeList.filterInPlace(_.body ne body)
+      shapesChanged = true
     this
 
   /** Removes a joint. */

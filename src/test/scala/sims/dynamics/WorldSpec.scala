@@ -117,6 +117,20 @@ class WorldSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     World() += a // free to join another world now
   }
 
+  test("world.shapes is a snapshot: later additions and removals do not change it") {
+    val world = World()
+    val a = Body(Circle(1, 1), Circle(0.5, 1))
+    val b = Circle(1, 1).asBody
+    world += a
+    val first = world.shapes
+    world += b
+    val second = world.shapes
+    world -= a
+    first shouldBe a.shapes
+    second shouldBe a.shapes ++ b.shapes
+    world.shapes shouldBe b.shapes
+  }
+
   test("a joint whose body is not in the world fails at step time") {
     val world = World()
     val a = Circle(1, 1).asBody
