@@ -35,23 +35,27 @@ final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPo
     // incident polygon (see the deviations: the original hid this by reporting every pair in
     // both orders).
     val side = PolyCollision.sideOf(axis, second)
-    val nx = PolyCollision.sideNormalX(reference, side)
-    val ny = PolyCollision.sideNormalY(reference, side)
-    val facing = PolyCollision.facing(reference, incident, nx, ny)
+    val nx = reference.sideNormalXs(side)
+    val ny = reference.sideNormalYs(side)
+    val refXs = reference.vertexXs
+    val refYs = reference.vertexYs
+    val incXs = incident.vertexXs
+    val incYs = incident.vertexYs
+    val facing = PolyCollision.facing(refXs, refYs, incXs, incYs, nx, ny)
     normalX = facing * nx
     normalY = facing * ny
     ensureCapacity(first.vertexCount + second.vertexCount)
     pointCount = 0
-    collect(incident, reference)
-    collect(reference, incident)
+    collect(incXs, incYs, refXs, refYs)
+    collect(refXs, refYs, incXs, incYs)
 
-  /** Appends the vertices of `from` that lie inside `inside` to the points. */
-  private def collect(from: ConvexPolygon, inside: ConvexPolygon): Unit =
+  /** Appends the vertices of one polygon that lie inside the other to the points. */
+  private def collect(fromXs: Array[Double], fromYs: Array[Double], insideXs: Array[Double], insideYs: Array[Double]): Unit =
     var i = 0
-    while i < from.vertexCount do
-      if PolyCollision.contains(inside, from.vertexX(i), from.vertexY(i)) then
-        pointXs(pointCount) = from.vertexX(i)
-        pointYs(pointCount) = from.vertexY(i)
+    while i < fromXs.length do
+      if PolyCollision.contains(insideXs, insideYs, fromXs(i), fromYs(i)) then
+        pointXs(pointCount) = fromXs(i)
+        pointYs(pointCount) = fromYs(i)
         pointCount += 1
       i += 1
 
@@ -97,22 +101,18 @@ object PolyCollision:
     if best < 0 then 0 else best // no positive overlap (the polygons only touch): first axis
 
   /** 1 if (nx, ny) points from the reference's vertex centroid towards the incident's, else -1. */
-  private def facing(reference: ConvexPolygon, incident: ConvexPolygon, nx: Double, ny: Double): Double =
-    val dx = centroidX(incident) - centroidX(reference)
-    val dy = centroidY(incident) - centroidY(reference)
+  private def facing(refXs: Array[Double], refYs: Array[Double], incXs: Array[Double], incYs: Array[Double],
+      nx: Double, ny: Double): Double =
+    val dx = mean(incXs) - mean(refXs)
+    val dy = mean(incYs) - mean(refYs)
     if nx * dx + ny * dy < 0 then -1.0 else 1.0
 
-  private def centroidX(p: ConvexPolygon): Double =
+  /** Mean of the coordinates, summed in order: a vertex centroid's coordinate. */
+  private def mean(values: Array[Double]): Double =
     var sum = 0.0
     var i = 0
-    while i < p.vertexCount do { sum += p.vertexX(i); i += 1 }
-    sum / p.vertexCount
-
-  private def centroidY(p: ConvexPolygon): Double =
-    var sum = 0.0
-    var i = 0
-    while i < p.vertexCount do { sum += p.vertexY(i); i += 1 }
-    sum / p.vertexCount
+    while i < values.length do { sum += values(i); i += 1 }
+    sum / values.length
 
   /** `colliding(first, second)` and `referenceAxis(first, second)` in one pass: both go through
     * the same axes in the same order (the second polygon's side normals, then the first's), so
@@ -120,20 +120,34 @@ object PolyCollision:
     * first one `colliding` would stop at), else the reference axis.
     */
   private[collision] def referenceAxisIfColliding(first: ConvexPolygon, second: ConvexPolygon): Int =
-    val total = second.vertexCount + first.vertexCount
+    val firstXs = first.vertexXs; val firstYs = first.vertexYs
+    val secondXs = second.vertexXs; val secondYs = second.vertexYs
+    val firstNxs = first.sideNormalXs; val firstNys = first.sideNormalYs
+    val secondNxs = second.sideNormalXs; val secondNys = second.sideNormalYs
+    val count2 = secondXs.length
+    val total = count2 + firstXs.length
     var best = -1
     var bestOverlap = Double.PositiveInfinity
     var separated = false
     var k = 0
     while !separated && k < total do
-      val owner = if k < second.vertexCount then second else first
-      val side = sideOf(k, second)
-      val nx = sideNormalX(owner, side)
-      val ny = sideNormalY(owner, side)
-      val lower1 = projectMin(first, nx, ny)
-      val upper1 = projectMax(first, nx, ny)
-      val lower2 = projectMin(second, nx, ny)
-      val upper2 = projectMax(second, nx, ny)
+      val nx = if k < count2 then secondNxs(k) else firstNxs(k - count2)
+      val ny = if k < count2 then secondNys(k) else firstNys(k - count2)
+      // Both ends of each projection in one pass (the same products, so the same extremes).
+      var lower1 = Double.PositiveInfinity; var upper1 = Double.NegativeInfinity
+      var i = 0
+      while i < firstXs.length do
+        val d = firstXs(i) * nx + firstYs(i) * ny
+        if d < lower1 then lower1 = d
+        if d > upper1 then upper1 = d
+        i += 1
+      var lower2 = Double.PositiveInfinity; var upper2 = Double.NegativeInfinity
+      i = 0
+      while i < count2 do
+        val d = secondXs(i) * nx + secondYs(i) * ny
+        if d < lower2 then lower2 = d
+        if d > upper2 then upper2 = d
+        i += 1
       if upper1 < lower2 || upper2 < lower1 then separated = true
       else
         val overlap = sims.geometry.Projection.overlap(lower1, upper1, lower2, upper2)
@@ -177,12 +191,13 @@ object PolyCollision:
       i += 1
     upper
 
-  private[collision] def contains(p: ConvexPolygon, x: Double, y: Double): Boolean =
+  /** True if (x, y) lies inside or on the counter-clockwise polygon with these vertices. */
+  private[collision] def contains(xs: Array[Double], ys: Array[Double], x: Double, y: Double): Boolean =
     var inside = true
     var i = 0
-    while inside && i < p.vertexCount do
-      val j = if i + 1 == p.vertexCount then 0 else i + 1
-      val cross = (p.vertexX(j) - p.vertexX(i)) * (y - p.vertexY(i)) - (p.vertexY(j) - p.vertexY(i)) * (x - p.vertexX(i))
+    while inside && i < xs.length do
+      val j = if i + 1 == xs.length then 0 else i + 1
+      val cross = (xs(j) - xs(i)) * (y - ys(i)) - (ys(j) - ys(i)) * (x - xs(i))
       if cross < 0 then inside = false
       i += 1
     inside

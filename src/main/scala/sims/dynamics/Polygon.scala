@@ -76,6 +76,11 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   override private[sims] def vertexCount: Int = count
   override private[sims] def vertexX(i: Int): Double = { refresh(); worldX(i) }
   override private[sims] def vertexY(i: Int): Double = { refresh(); worldY(i) }
+  // The library polygon's own arrays, current: no copy.
+  override private[sims] def vertexXs: Array[Double] = { refresh(); worldX }
+  override private[sims] def vertexYs: Array[Double] = { refresh(); worldY }
+  override private[sims] def sideNormalXs: Array[Double] = { refreshNormals(); normalX }
+  override private[sims] def sideNormalYs: Array[Double] = { refreshNormals(); normalY }
   override private[sims] def sideNormalX(i: Int): Double = { refreshNormals(); normalX(i) }
   override private[sims] def sideNormalY(i: Int): Double = { refreshNormals(); normalY(i) }
 

@@ -56,6 +56,20 @@ trait ConvexPolygon:
   /** y coordinate of vertex i (hot-loop access). */
   private[sims] def vertexY(i: Int): Double = vertices(i).y
 
+  /** The x coordinates of the vertices as an array, for the narrowphase's loops: not to be
+    * modified, and valid until the polygon moves. This default builds a new array.
+    */
+  private[sims] def vertexXs: Array[Double] = Array.tabulate(vertexCount)(vertexX)
+
+  /** The y coordinates of the vertices as an array (see `vertexXs`). */
+  private[sims] def vertexYs: Array[Double] = Array.tabulate(vertexCount)(vertexY)
+
+  /** The x components of the outward unit side normals as an array (see `vertexXs`). */
+  private[sims] def sideNormalXs: Array[Double] = Array.tabulate(vertexCount)(sideNormalX)
+
+  /** The y components of the outward unit side normals as an array (see `vertexXs`). */
+  private[sims] def sideNormalYs: Array[Double] = Array.tabulate(vertexCount)(sideNormalY)
+
   /** x of the outward unit normal of side i (from vertex i to i + 1): the side's right normal. */
   private[sims] def sideNormalX(i: Int): Double =
     val j = if i + 1 == vertexCount then 0 else i + 1

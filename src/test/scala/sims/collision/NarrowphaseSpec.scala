@@ -4,7 +4,7 @@ import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import sims.Close
 import sims.dynamics.{Circle, Rectangle, Shape}
-import sims.geometry.Vector2D
+import sims.geometry.{ConvexPolygon, Vector2D}
 
 /** Each narrowphase case with hand-computed normals and points. */
 class NarrowphaseSpec extends AnyFunSuite with Matchers:
@@ -146,3 +146,32 @@ class NarrowphaseSpec extends AnyFunSuite with Matchers:
     math.abs(collision.normal.x) shouldBe 1.0 +- 1e-12
   }
 
+
+  /** A box that is not a library Polygon: it gives only `vertices`, so the narrowphase reads it
+    * through ConvexPolygon's default accessors.
+    */
+  private final class UserBox(halfWidth: Double, halfHeight: Double) extends Shape with ConvexPolygon:
+    val density = 1.0
+    def volume: Double = 4 * halfWidth * halfHeight
+    def I: Double = mass * (4 * halfWidth * halfWidth + 4 * halfHeight * halfHeight) / 12
+    def vertices: IndexedSeq[Vector2D] =
+      IndexedSeq(Vector2D(halfWidth, halfHeight), Vector2D(-halfWidth, halfHeight),
+        Vector2D(-halfWidth, -halfHeight), Vector2D(halfWidth, -halfHeight)).map(_.rotate(rotation) + pos)
+
+  test("polygon-polygon: a user polygon collides like the library polygon of the same outline") {
+    val user = UserBox(0.5, 0.25); user.pos = Vector2D(0.3, 0.6); user.asBody
+    val twin = box(0.5, 0.25, 0.3, 0.6)
+    val ground = box(2, 0.5, 0, 0)
+    val expected = PolyCollision.referenceAxisIfColliding(twin, ground)
+    expected should be >= 0
+    PolyCollision.referenceAxisIfColliding(user, ground) shouldBe expected
+    val fromUser = collide(user, ground)
+    val fromTwin = collide(twin, ground)
+    fromUser.normal.x shouldBe fromTwin.normal.x +- 1e-12
+    fromUser.normal.y shouldBe fromTwin.normal.y +- 1e-12
+    fromUser.points.size shouldBe fromTwin.points.size
+    for (p, q) <- fromUser.points.zip(fromTwin.points) do
+      p.x shouldBe q.x +- 1e-12
+      p.y shouldBe q.y +- 1e-12
+    PolyCollision.referenceAxisIfColliding(user, box(0.5, 0.5, 5, 5)) shouldBe -1 // far apart
+  }
