@@ -62,32 +62,37 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
   // The solvers work on doubles, with the same expressions (and so the same results) as the
   // vector formulas in the class comment; connection points are centre plus arm.
 
-  // What velocity correction needs depends only on positions, which phase 4 does not change:
-  // u, the arms and m are computed once per step (when a body has moved), not per iteration.
-  private var ux, uy, r1x, r1y, r2x, r2y, m = 0.0
-  private var apart = false // false when the connection points coincide
+  // The joint's geometry as last measured: length |x|, direction u, arms r1 and r2, effective
+  // mass m, and whether the connection points are apart (else there is no direction).
+  private var length, ux, uy, r1x, r1y, r2x, r2y, m = 0.0
+  private var apart = false
+  // The bodies' move counts when phase 4 last measured: velocity correction needs only
+  // positions besides the velocities, and phase 4 does not move bodies, so one measurement
+  // per step serves all its iterations.
   private var moves1, moves2 = -1L
 
-  private def prepareVelocity(): Unit =
+  /** Measures the joint from the current positions and rotations. */
+  private def measure(): Unit =
     a1.update()
     a2.update()
     val c1x = node1.x + a1.armX; val c1y = node1.y + a1.armY
     val c2x = node2.x + a2.armX; val c2y = node2.y + a2.armY
     val xx = c2x - c1x
     val xy = c2y - c1y
-    val length = math.sqrt(xx * xx + xy * xy)
-    apart = length != 0 // coincident points give no direction to correct along
+    length = math.sqrt(xx * xx + xy * xy)
+    apart = length != 0
     if apart then
       ux = xx / length
       uy = xy / length
       r1x = c1x - node1.x; r1y = c1y - node1.y
       r2x = c2x - node2.x; r2y = c2y - node2.y
       m = effectiveMass(ux, uy, r1x, r1y, r2x, r2y)
-    moves1 = node1.moves
-    moves2 = node2.moves
 
   def correctVelocity(h: Double): Unit =
-    if moves1 != node1.moves || moves2 != node2.moves then prepareVelocity()
+    if moves1 != node1.moves || moves2 != node2.moves then
+      measure()
+      moves1 = node1.moves
+      moves2 = node2.moves
     if apart then
       // Relative velocity of the connection points: v + w x r of each body.
       val vx = (node2.vx - node2.w * r2y) - (node1.vx - node1.w * r1y)
@@ -99,19 +104,8 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
       node2.impulseAt(impulseX, impulseY, r2x, r2y)
 
   def correctPosition(h: Double): Unit =
-    a1.update()
-    a2.update()
-    val c1x = node1.x + a1.armX; val c1y = node1.y + a1.armY
-    val c2x = node2.x + a2.armX; val c2y = node2.y + a2.armY
-    val xx = c2x - c1x
-    val xy = c2y - c1y
-    val length = math.sqrt(xx * xx + xy * xy)
-    if length != 0 then
-      val ux = xx / length
-      val uy = xy / length
-      val r1x = c1x - node1.x; val r1y = c1y - node1.y
-      val r2x = c2x - node2.x; val r2y = c2y - node2.y
-      val m = effectiveMass(ux, uy, r1x, r1y, r2x, r2y)
+    measure()
+    if apart then
       val c = length - distance
       val px = -ux * m * c
       val py = -uy * m * c
