@@ -71,12 +71,17 @@ class GridDetector(val world: World) extends Detector:
       if c != null then found += c
       i += 1
 
-  /** Looks up the narrowphase methods of every pair once, for all the reruns of this step. */
+  /** Looks up the narrowphase methods of every pair once, for all the reruns of this step, and
+    * lets every slot give back the collision objects its pair does not use.
+    */
   private def resolvePairs(): Unit =
     var i = 0
-    while i < pairs.size do
+    while i < pairs.created do
       val slot = pairs.slot(i)
-      slot.methods = methods.resolve(slot.first, slot.second)
+      if i < pairs.size then
+        slot.methods = methods.resolve(slot.first, slot.second)
+        methods.releaseUnused(slot, slot.methods.kind)
+      else methods.releaseUnused(slot, -1)
       i += 1
 
   // Broadphase state, reused from step to step: each shape's AABB, read once per step.

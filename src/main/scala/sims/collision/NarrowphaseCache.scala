@@ -85,9 +85,14 @@ private[collision] final class NarrowphaseCache:
             val p1 = a.asInstanceOf[Polygon]
             val p2 = b.asInstanceOf[Polygon]
             val axis = PolyCollision.referenceAxisIfColliding(p1, p2)
-            if axis < 0 then null
-            else if slot.poly == null then { slot.poly = PolyCollision(p1, p2); slot.poly }
-            else { slot.poly.compute(p1, p2, axis); slot.poly }
+            if axis < 0 then
+              if slot.poly != null then { sparePolys += slot.poly; slot.poly = null }
+              null
+            else
+              if slot.poly == null && sparePolys.nonEmpty then slot.poly = sparePolys.remove(sparePolys.length - 1)
+              if slot.poly == null then slot.poly = PolyCollision(p1, p2)
+              else slot.poly.compute(p1, p2, axis)
+              slot.poly
           case PolygonCircle => polygonCircle(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Circle])
           case _ => polygonCircle(slot, b.asInstanceOf[Polygon], a.asInstanceOf[Circle])
         slot.doneFirst = a
@@ -98,9 +103,44 @@ private[collision] final class NarrowphaseCache:
         c
 
   private def polygonCircle(slot: PairSlot, p: Polygon, c: Circle): Collision =
-    if !PolyCircleCollision.colliding(p, c) then null
-    else if slot.polyCircle == null then { slot.polyCircle = PolyCircleCollision(p, c); slot.polyCircle }
-    else { slot.polyCircle.compute(p, c); slot.polyCircle }
+    if !PolyCircleCollision.colliding(p, c) then
+      if slot.polyCircle != null then { sparePolyCircles += slot.polyCircle; slot.polyCircle = null }
+      null
+    else
+      if slot.polyCircle == null && sparePolyCircles.nonEmpty then
+        slot.polyCircle = sparePolyCircles.remove(sparePolyCircles.length - 1)
+      if slot.polyCircle == null then slot.polyCircle = PolyCircleCollision(p, c)
+      else slot.polyCircle.compute(p, c)
+      slot.polyCircle
+
+  // Collision objects of the polygon kinds that no slot holds, handed to the next slot that
+  // needs one. A slot gives its object back when its pair stops colliding or is of another kind
+  // (the circle kind stays with its slot: in a scene of circles nearly every slot soon has
+  // one, and handing them around would scatter them in memory). Contacts with polygons are
+  // often a minority that moves between slots as a scene changes; kept per slot, every slot
+  // would in time allocate its own.
+  private val sparePolyCircles = ArrayBuffer.empty[PolyCircleCollision]
+  private val sparePolys = ArrayBuffer.empty[PolyCollision]
+
+  /** Gives back the slot's polygon-kind objects that its pair, of the given kind (-1: the slot
+    * holds no pair this step), does not use.
+    */
+  def releaseUnused(slot: PairSlot, kind: Int): Unit =
+    if slot.polyCircle != null && kind != PolygonCircle && kind != CirclePolygon then
+      forget(slot, slot.polyCircle)
+      sparePolyCircles += slot.polyCircle
+      slot.polyCircle = null
+    if slot.poly != null && kind != PolygonPolygon then
+      forget(slot, slot.poly)
+      sparePolys += slot.poly
+      slot.poly = null
+
+  /** Drops the slot's last result if it is the object being given away. */
+  private def forget(slot: PairSlot, c: Collision): Unit =
+    if slot.result eq c then
+      slot.result = null
+      slot.doneFirst = null
+      slot.doneSecond = null
 
   /** A pair whose methods are not one built-in kind: through the partial functions. */
   private def collideGeneral(r: Resolved, a: Shape, b: Shape): Collision =

@@ -41,7 +41,11 @@ private[collision] final class PairBuffer:
   private var slots = new Array[PairSlot](64)
   private var count = 0
 
+  private var made = 0
+
   def size: Int = count
+  /** Number of slots made so far (slots 0 until `created` exist; those from `size` on are idle). */
+  def created: Int = made
   def slot(i: Int): PairSlot = slots(i)
   def first(i: Int): Shape = slots(i).first
   def second(i: Int): Shape = slots(i).second
@@ -53,6 +57,7 @@ private[collision] final class PairBuffer:
     if s == null then
       s = PairSlot()
       slots(count) = s
+      made += 1
     s.first = a
     s.second = b
     count += 1
