@@ -85,11 +85,9 @@ private[collision] final class NarrowphaseCache:
             val p1 = a.asInstanceOf[Polygon]
             val p2 = b.asInstanceOf[Polygon]
             val axis = PolyCollision.referenceAxisIfColliding(p1, p2)
-            if axis < 0 then
-              if slot.poly != null then { sparePolys += slot.poly; slot.poly = null }
-              null
+            if axis < 0 then { givePoly(slot); null }
             else
-              if slot.poly == null && sparePolys.nonEmpty then slot.poly = sparePolys.remove(sparePolys.length - 1)
+              if slot.poly == null then slot.poly = take(sparePolys)
               if slot.poly == null then slot.poly = PolyCollision(p1, p2)
               else slot.poly.compute(p1, p2, axis)
               slot.poly
@@ -103,12 +101,9 @@ private[collision] final class NarrowphaseCache:
         c
 
   private def polygonCircle(slot: PairSlot, p: Polygon, c: Circle): Collision =
-    if !PolyCircleCollision.colliding(p, c) then
-      if slot.polyCircle != null then { sparePolyCircles += slot.polyCircle; slot.polyCircle = null }
-      null
+    if !PolyCircleCollision.colliding(p, c) then { givePolyCircle(slot); null }
     else
-      if slot.polyCircle == null && sparePolyCircles.nonEmpty then
-        slot.polyCircle = sparePolyCircles.remove(sparePolyCircles.length - 1)
+      if slot.polyCircle == null then slot.polyCircle = take(sparePolyCircles)
       if slot.polyCircle == null then slot.polyCircle = PolyCircleCollision(p, c)
       else slot.polyCircle.compute(p, c)
       slot.polyCircle
@@ -126,14 +121,24 @@ private[collision] final class NarrowphaseCache:
     * holds no pair this step), does not use.
     */
   def releaseUnused(slot: PairSlot, kind: Int): Unit =
-    if slot.polyCircle != null && kind != PolygonCircle && kind != CirclePolygon then
+    if kind != PolygonCircle && kind != CirclePolygon then givePolyCircle(slot)
+    if kind != PolygonPolygon then givePoly(slot)
+
+  private def givePolyCircle(slot: PairSlot): Unit =
+    if slot.polyCircle != null then
       forget(slot, slot.polyCircle)
       sparePolyCircles += slot.polyCircle
       slot.polyCircle = null
-    if slot.poly != null && kind != PolygonPolygon then
+
+  private def givePoly(slot: PairSlot): Unit =
+    if slot.poly != null then
       forget(slot, slot.poly)
       sparePolys += slot.poly
       slot.poly = null
+
+  /** A spare object, or null when there is none. */
+  private def take[C <: Collision](spares: ArrayBuffer[C]): C =
+    if spares.isEmpty then null.asInstanceOf[C] else spares.remove(spares.length - 1)
 
   /** Drops the slot's last result if it is the object being given away. */
   private def forget(slot: PairSlot, c: Collision): Unit =

@@ -66,60 +66,27 @@ final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPo
 object PolyCollision:
   /** True when the projections of the polygons overlap (or touch) on every side normal of both. */
   def colliding(p1: ConvexPolygon, p2: ConvexPolygon): Boolean =
-    allOverlap(p1, p2, p2) && allOverlap(p1, p2, p1)
-
-  private def allOverlap(p1: ConvexPolygon, p2: ConvexPolygon, sidesOf: ConvexPolygon): Boolean =
-    var i = 0
-    var separated = false
-    while !separated && i < sidesOf.vertexCount do
-      val nx = sideNormalX(sidesOf, i)
-      val ny = sideNormalY(sidesOf, i)
-      if projectMax(p1, nx, ny) < projectMin(p2, nx, ny) || projectMax(p2, nx, ny) < projectMin(p1, nx, ny) then
-        separated = true
-      i += 1
-    !separated
+    separatingAxisTest(p1, p2, stopWhenSeparated = true) >= 0
 
   /** Index of the reference axis: `k < second.vertexCount` is side k of the second polygon,
     * otherwise side `k - second.vertexCount` of the first.
     */
   private def referenceAxis(first: ConvexPolygon, second: ConvexPolygon): Int =
-    val total = second.vertexCount + first.vertexCount
-    var best = -1
-    var bestOverlap = Double.PositiveInfinity
-    var k = 0
-    while k < total do
-      val owner = if k < second.vertexCount then second else first
-      val side = sideOf(k, second)
-      val nx = sideNormalX(owner, side)
-      val ny = sideNormalY(owner, side)
-      val overlap = sims.geometry.Projection.overlap(
-        projectMin(first, nx, ny), projectMax(first, nx, ny), projectMin(second, nx, ny), projectMax(second, nx, ny))
-      if overlap > 0 && overlap < bestOverlap then
-        best = k
-        bestOverlap = overlap
-      k += 1
-    if best < 0 then 0 else best // no positive overlap (the polygons only touch): first axis
+    separatingAxisTest(first, second, stopWhenSeparated = false)
 
-  /** 1 if (nx, ny) points from the reference's vertex centroid towards the incident's, else -1. */
-  private def facing(refXs: Array[Double], refYs: Array[Double], incXs: Array[Double], incYs: Array[Double],
-      nx: Double, ny: Double): Double =
-    val dx = mean(incXs) - mean(refXs)
-    val dy = mean(incYs) - mean(refYs)
-    if nx * dx + ny * dy < 0 then -1.0 else 1.0
-
-  /** Mean of the coordinates, summed in order: a vertex centroid's coordinate. */
-  private def mean(values: Array[Double]): Double =
-    var sum = 0.0
-    var i = 0
-    while i < values.length do { sum += values(i); i += 1 }
-    sum / values.length
-
-  /** `colliding(first, second)` and `referenceAxis(first, second)` in one pass: both go through
-    * the same axes in the same order (the second polygon's side normals, then the first's), so
-    * each axis' projections are computed once. -1 when some axis separates the polygons (the
-    * first one `colliding` would stop at), else the reference axis.
+  /** `colliding(first, second)` and `referenceAxis(first, second)` in one pass: -1 when some
+    * axis separates the polygons (the first one `colliding` would stop at), else the reference
+    * axis.
     */
   private[collision] def referenceAxisIfColliding(first: ConvexPolygon, second: ConvexPolygon): Int =
+    separatingAxisTest(first, second, stopWhenSeparated = true)
+
+  /** The SAT over the second polygon's side normals, then the first's: the axis with the
+    * smallest positive projection overlap (the first found on ties; axis 0 when none is
+    * positive, as for polygons that only touch). With `stopWhenSeparated`, -1 as soon as an
+    * axis separates the polygons.
+    */
+  private def separatingAxisTest(first: ConvexPolygon, second: ConvexPolygon, stopWhenSeparated: Boolean): Int =
     val firstXs = first.vertexXs; val firstYs = first.vertexYs
     val secondXs = second.vertexXs; val secondYs = second.vertexYs
     val firstNxs = first.sideNormalXs; val firstNys = first.sideNormalYs
@@ -148,7 +115,7 @@ object PolyCollision:
         if d < lower2 then lower2 = d
         if d > upper2 then upper2 = d
         i += 1
-      if upper1 < lower2 || upper2 < lower1 then separated = true
+      if stopWhenSeparated && (upper1 < lower2 || upper2 < lower1) then separated = true
       else
         val overlap = sims.geometry.Projection.overlap(lower1, upper1, lower2, upper2)
         if overlap > 0 && overlap < bestOverlap then
@@ -157,39 +124,22 @@ object PolyCollision:
       k += 1
     if separated then -1 else if best < 0 then 0 else best
 
+  /** 1 if (nx, ny) points from the reference's vertex centroid towards the incident's, else -1. */
+  private def facing(refXs: Array[Double], refYs: Array[Double], incXs: Array[Double], incYs: Array[Double],
+      nx: Double, ny: Double): Double =
+    val dx = mean(incXs) - mean(refXs)
+    val dy = mean(incYs) - mean(refYs)
+    if nx * dx + ny * dy < 0 then -1.0 else 1.0
+
+  /** Mean of the coordinates, summed in order: a vertex centroid's coordinate. */
+  private def mean(values: Array[Double]): Double =
+    var sum = 0.0
+    var i = 0
+    while i < values.length do { sum += values(i); i += 1 }
+    sum / values.length
+
   private def sideOf(k: Int, second: ConvexPolygon): Int =
     if k < second.vertexCount then k else k - second.vertexCount
-
-  private[collision] def sideNormalX(p: ConvexPolygon, i: Int): Double = p.sideNormalX(i)
-
-  private[collision] def sideNormalY(p: ConvexPolygon, i: Int): Double = p.sideNormalY(i)
-
-  // A library polygon projects itself from its vertex arrays (the same loop, the same result).
-  private def projectMin(p: ConvexPolygon, ax: Double, ay: Double): Double = p match
-    case q: sims.dynamics.Polygon => q.projectMin(ax, ay)
-    case _ => projectMinOf(p, ax, ay)
-
-  private def projectMax(p: ConvexPolygon, ax: Double, ay: Double): Double = p match
-    case q: sims.dynamics.Polygon => q.projectMax(ax, ay)
-    case _ => projectMaxOf(p, ax, ay)
-
-  private def projectMinOf(p: ConvexPolygon, ax: Double, ay: Double): Double =
-    var lower = Double.PositiveInfinity
-    var i = 0
-    while i < p.vertexCount do
-      val d = p.vertexX(i) * ax + p.vertexY(i) * ay
-      if d < lower then lower = d
-      i += 1
-    lower
-
-  private def projectMaxOf(p: ConvexPolygon, ax: Double, ay: Double): Double =
-    var upper = Double.NegativeInfinity
-    var i = 0
-    while i < p.vertexCount do
-      val d = p.vertexX(i) * ax + p.vertexY(i) * ay
-      if d > upper then upper = d
-      i += 1
-    upper
 
   /** True if (x, y) lies inside or on the counter-clockwise polygon with these vertices. */
   private[collision] def contains(xs: Array[Double], ys: Array[Double], x: Double, y: Double): Boolean =

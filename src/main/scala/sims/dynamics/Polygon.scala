@@ -58,7 +58,8 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   private def refreshNormals(): Unit =
     refresh()
     if !normalsCurrent then
-      // The same expressions as ConvexPolygon.sideNormalX/Y, evaluated once per move.
+      // The same expressions as ConvexPolygon.sideNormalX/Y (so the same normals as its
+      // default sideNormalXs/Ys), evaluated once per move.
       var i = 0
       while i < count do
         val j = if i + 1 == count then 0 else i + 1
@@ -81,8 +82,6 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   override private[sims] def vertexYs: Array[Double] = { refresh(); worldY }
   override private[sims] def sideNormalXs: Array[Double] = { refreshNormals(); normalX }
   override private[sims] def sideNormalYs: Array[Double] = { refreshNormals(); normalY }
-  override private[sims] def sideNormalX(i: Int): Double = { refreshNormals(); normalX(i) }
-  override private[sims] def sideNormalY(i: Int): Double = { refreshNormals(); normalY(i) }
 
   override def project(axis: Vector2D): Projection =
     refresh()
