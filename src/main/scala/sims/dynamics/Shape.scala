@@ -82,6 +82,11 @@ abstract class Shape:
   /** Order in which the shape joined a world (-1 outside any world); orders broadphase pairs. */
   private[sims] var worldIndex: Int = -1
 
+  /** The world index of the first shape of this shape's body (-1 outside any world): a key of
+    * the body, unique in its world, for the contact solver's ordering.
+    */
+  private[sims] var bodyKey: Int = -1
+
   /** The smallest axis-aligned box around the shape. */
   def AABB: AABB
 

@@ -85,8 +85,10 @@ class World:
     if body.world != null then throw IllegalArgumentException(s"body $body is already in another world")
     body.world = this
     bodyBuffer += body
+    val key = nextShapeIndex
     for s <- body.shapes do
       s.worldIndex = nextShapeIndex
+      s.bodyKey = key
       nextShapeIndex += 1
     shapeList ++= body.shapes
     shapesChanged = true
@@ -107,7 +109,7 @@ class World:
     if i >= 0 then
       bodyBuffer.remove(i)
       body.world = null
-      body.shapes.foreach(_.worldIndex = -1)
+      body.shapes.foreach { s => s.worldIndex = -1; s.bodyKey = -1 }
       shapeList.filterInPlace(_.body ne body)
       shapesChanged = true
     this

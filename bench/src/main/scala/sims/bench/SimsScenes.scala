@@ -41,6 +41,9 @@ object SimsScenes:
     c.pos = Vector2D(x, y)
     c.asBody
 
+  /** The world of the named scene (for tools that look inside a SiMS step). */
+  def buildWorld(scene: String): World = build(scene).asInstanceOf[Built].world
+
   /** Builds the named scene. */
   def build(scene: String): EngineScene =
     val world = newWorld()
