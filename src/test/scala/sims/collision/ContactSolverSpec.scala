@@ -46,20 +46,26 @@ class ContactSolverSpec extends AnyFunSuite with Matchers:
     bodies.flatMap(b => Seq(b.linearVelocity.x, b.linearVelocity.y, b.angularVelocity))
       .map(java.lang.Double.doubleToLongBits)
 
-  test("10 iterations of the solver equal each collision's correctVelocity in order, bit for bit") {
+  /** Loads the first scene's collisions into a solver, lets `check` look at it, runs 10
+    * iterations, and expects the bits of 10 rounds of the second (identical) scene's
+    * collisions, each corrected by its own `correctVelocity` in list order.
+    */
+  private def solvesLikeListOrder(solved: (Seq[Body], IndexedSeq[Collision]),
+      reference: (Seq[Body], IndexedSeq[Collision]))(check: ContactSolver => Unit): Unit =
     val h = 1.0 / 60
-    val (solved, solvedCollisions) = scene()
-    val (reference, referenceCollisions) = scene()
-    val before = velocityBits(solved)
-
+    val before = velocityBits(solved._1)
     val solver = ContactSolver()
-    solver.load(solvedCollisions)
-    solver.size shouldBe 5 // one point per built-in kind here, plus the user collision
+    solver.load(solved._2)
+    check(solver)
     for _ <- 1 to 10 do solver.correctVelocities(h)
-    for _ <- 1 to 10; c <- referenceCollisions do c.correctVelocity(h)
+    for _ <- 1 to 10; c <- reference._2 do c.correctVelocity(h)
+    velocityBits(solved._1) should not equal before // the corrections did something
+    velocityBits(solved._1) shouldBe velocityBits(reference._1)
 
-    velocityBits(solved) should not equal before // the corrections did something
-    velocityBits(solved) shouldBe velocityBits(reference)
+  test("10 iterations of the solver equal each collision's correctVelocity in order, bit for bit") {
+    solvesLikeListOrder(scene(), scene()) { solver =>
+      solver.size shouldBe 5 // one point per built-in kind here, plus the user collision
+    }
   }
 
   test("a cleared solver corrects nothing") {
@@ -72,39 +78,30 @@ class ContactSolverSpec extends AnyFunSuite with Matchers:
     velocityBits(bodies) shouldBe before
   }
 
-  /** A world's pile of balls in a container after a second of falling, its collisions just
-    * detected, and the bits of every body's velocities.
+  /** A world's pile of balls in a container after a second of falling, with its bodies and
+    * its collisions just detected.
     */
-  private def pile(): (sims.dynamics.World, Seq[Body]) =
-    val (world, balls) = Scenes.ballStack(60)
+  private def pile(): (Seq[Body], IndexedSeq[Collision]) =
+    val (world, _) = Scenes.ballStack(60)
     for _ <- 1 to 60 do world.step()
     world.detector.detect()
-    (world, world.bodies.toSeq)
+    (world.bodies.toSeq, world.detector.collisions.toIndexedSeq)
 
   test("in a world's pile the solver runs in waves, with the bits of each collision in list order") {
-    val h = 1.0 / 60
-    val (solvedWorld, solved) = pile()
-    val (referenceWorld, reference) = pile()
-    val before = velocityBits(solved)
-    val solver = ContactSolver()
-    solver.load(solvedWorld.detector.collisions)
-    solver.size should be > 60
-    solver.waveCount should be > 1
-    solver.waveCount should be < solver.size / 2 // many points really move ahead of their list place
-    for _ <- 1 to 10 do solver.correctVelocities(h)
-    val collisions = referenceWorld.detector.collisions
-    for _ <- 1 to 10; c <- collisions do c.correctVelocity(h)
-    velocityBits(solved) should not equal before
-    velocityBits(solved) shouldBe velocityBits(reference)
+    solvesLikeListOrder(pile(), pile()) { solver =>
+      solver.size should be > 60
+      solver.waveCount should be > 1
+      solver.waveCount should be < solver.size / 2 // many points really move ahead of their list place
+    }
   }
 
   test("a fixed body with a velocity of -0.0 keeps the list order (an impulse could make it +0.0)") {
-    val (world, _) = pile()
+    val (bodies, collisions) = pile()
     val solver = ContactSolver()
-    solver.load(world.detector.collisions)
+    solver.load(collisions)
     solver.waveCount should be > 0
-    world.bodies.filter(_.fixed).foreach(_.linearVelocity = Vector2D(-0.0, 0))
-    solver.load(world.detector.collisions)
+    bodies.filter(_.fixed).foreach(_.linearVelocity = Vector2D(-0.0, 0))
+    solver.load(collisions)
     solver.waveCount shouldBe 0
   }
 
@@ -124,13 +121,5 @@ class ContactSolverSpec extends AnyFunSuite with Matchers:
         body.linearVelocity = Vector2D(0.7 - 0.5 * i, 0.4 * i - 0.9)
         body.angularVelocity = 1.5 - i
       (bodies, IndexedSeq(CircleCollision(b, c), CircleCollision(c, right), CircleCollision(left, d)))
-    val (solved, solvedCollisions) = scene()
-    val (reference, referenceCollisions) = scene()
-    val solver = ContactSolver()
-    solver.load(solvedCollisions)
-    solver.waveCount shouldBe 3
-    for _ <- 1 to 10 do solver.correctVelocities(1.0 / 60)
-    for _ <- 1 to 10; c <- referenceCollisions do c.correctVelocity(1.0 / 60)
-    velocityBits(solved) shouldBe velocityBits(reference)
+    solvesLikeListOrder(scene(), scene()) { solver => solver.waveCount shouldBe 3 }
   }
-
