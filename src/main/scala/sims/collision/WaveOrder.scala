@@ -44,8 +44,8 @@ private[sims] final class WaveOrder:
     _waves = 0
 
   /** Appends a correction between two bodies given by their keys: small non-negative
-    * integers, unique per body (the world gives each shape its body's key), or -1 for a fixed
-    * body, which orders nothing.
+    * integers, unique per body (a world's bodies have the keys 0 until n, which their shapes
+    * carry), or -1 for a fixed body, which orders nothing.
     */
   def add(key1: Int, key2: Int): Unit =
     if count == order.length then

@@ -82,8 +82,8 @@ abstract class Shape:
   /** Order in which the shape joined a world (-1 outside any world); orders broadphase pairs. */
   private[sims] var worldIndex: Int = -1
 
-  /** The world index of the first shape of this shape's body (-1 outside any world): a key of
-    * the body, unique in its world, for the contact solver's ordering.
+  /** The index of this shape's body in its world's bodies (-1 outside any world): a key of the
+    * body for the contact solver's ordering, kept here where the solver reads the shapes.
     */
   private[sims] var bodyKey: Int = -1
 

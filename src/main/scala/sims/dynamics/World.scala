@@ -85,10 +85,9 @@ class World:
     if body.world != null then throw IllegalArgumentException(s"body $body is already in another world")
     body.world = this
     bodyBuffer += body
-    val key = nextShapeIndex
     for s <- body.shapes do
       s.worldIndex = nextShapeIndex
-      s.bodyKey = key
+      s.bodyKey = bodyBuffer.length - 1
       nextShapeIndex += 1
     shapeList ++= body.shapes
     shapesChanged = true
@@ -110,6 +109,8 @@ class World:
       bodyBuffer.remove(i)
       body.world = null
       body.shapes.foreach { s => s.worldIndex = -1; s.bodyKey = -1 }
+      // The later bodies move down one place: their keys follow, so keys stay 0 until n.
+      for j <- i until bodyBuffer.length; s <- bodyBuffer(j).shapes do s.bodyKey = j
       shapeList.filterInPlace(_.body ne body)
       shapesChanged = true
     this

@@ -131,6 +131,19 @@ class WorldSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     world.shapes shouldBe b.shapes
   }
 
+  test("each body's shapes carry its index in the world's bodies, also after a removal") {
+    val world = World()
+    val bodies = Seq(Body(Circle(1, 1), Circle(0.5, 1)), Circle(1, 1).asBody, Body(Circle(1, 1), Circle(2, 1)))
+    bodies.foreach(world += _)
+    def keys = world.bodies.map(_.shapes.map(_.bodyKey))
+    keys shouldBe Seq(Seq(0, 0), Seq(1), Seq(2, 2))
+    world -= bodies(0)
+    keys shouldBe Seq(Seq(0), Seq(1, 1))
+    bodies(0).shapes.map(_.bodyKey) shouldBe Seq(-1, -1)
+    world += bodies(0)
+    keys shouldBe Seq(Seq(0), Seq(1, 1), Seq(2, 2))
+  }
+
   test("a joint whose body is not in the world fails at step time") {
     val world = World()
     val a = Circle(1, 1).asBody
