@@ -70,15 +70,17 @@ private[collision] final class NarrowphaseCache:
               return null
             val distance = CircleCollision.centreDistance(c1, c2)
             val separation = distance - (c1.radius + c2.radius)
-            slot.gap =
-              if b1.centred && b2.centred then
-                separation - GapMargin * (1 + math.abs(c1.x) + math.abs(c1.y) + math.abs(c2.x) + math.abs(c2.y) + distance)
-              else 0
-            slot.doneTravel1 = b1.travel
-            slot.doneTravel2 = b2.travel
-            slot.doneJumps1 = b1.jumps
-            slot.doneJumps2 = b2.jumps
-            if !(separation <= 0) then null
+            if !(separation <= 0) then
+              // Apart: the gap and the travels it is measured from (read only while apart).
+              slot.gap =
+                if b1.centred && b2.centred then
+                  separation - GapMargin * (1 + math.abs(c1.x) + math.abs(c1.y) + math.abs(c2.x) + math.abs(c2.y) + distance)
+                else 0
+              slot.doneTravel1 = b1.travel
+              slot.doneTravel2 = b2.travel
+              slot.doneJumps1 = b1.jumps
+              slot.doneJumps2 = b2.jumps
+              null
             else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
             else { slot.circle.compute(c1, c2, distance); slot.circle }
           case PolygonPolygon =>
