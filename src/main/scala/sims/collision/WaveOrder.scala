@@ -30,7 +30,7 @@ private[sims] final class WaveOrder:
   /** Number of corrections added. */
   def size: Int = count
 
-  /** Number of waves of the last plan. */
+  /** Number of waves among the corrections added since `clear()`. */
   def waves: Int = _waves
 
   /** Starts a new list. */
