@@ -24,7 +24,8 @@ private[sims] final class ContactSolver:
   private var data = new Array[Double](64 * Stride)
   // Per point: the wave-order keys of its two bodies (-1 for a fixed body).
   private var keys = new Array[Int](64 * 2)
-  private var keyless = false
+  // True when a body of the loaded points cannot be ordered in waves (see `orderable`).
+  private var unorderable = false
 
   /** Number of entries: contact points of the built-in kinds plus user-kind collisions. */
   def size: Int = count
@@ -35,7 +36,7 @@ private[sims] final class ContactSolver:
   /** Takes the contact points of `collisions` for this step's velocity iterations. */
   def load(collisions: collection.IndexedSeq[Collision]): Unit =
     count = 0
-    keyless = false
+    unorderable = false
     var owned = false
     var c = 0
     while c < collisions.length do
@@ -51,7 +52,7 @@ private[sims] final class ContactSolver:
       c += 1
     // A user kind's correction may touch anything: such steps keep the list order, as do the
     // rare steps with a body the wave order cannot take (see `orderable`).
-    if owned || keyless then waves.clear() else schedule()
+    if owned || unorderable then waves.clear() else schedule()
 
   /** Forgets the contacts (a step without collision detection). */
   def clear(): Unit =
@@ -94,7 +95,7 @@ private[sims] final class ContactSolver:
     val ny = c.normalY
     val key1 = if b1.fixed then -1 else c.shape1.bodyKey
     val key2 = if b2.fixed then -1 else c.shape2.bodyKey
-    if !orderable(b1, key1) || !orderable(b2, key2) then keyless = true
+    if !orderable(b1, key1) || !orderable(b2, key2) then unorderable = true
     val restitutionFactor = 1 + c.shape1.restitution * c.shape2.restitution
     val mu = c.shape1.friction * c.shape2.friction
     var i = 0

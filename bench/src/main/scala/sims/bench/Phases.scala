@@ -52,8 +52,7 @@ object Phases:
       val detect = best { world.restore(state); world.detector.detect() }
       val solver = ContactSolver()
       world.restore(state)
-      world.detector.detect()
-      solver.load(world.detector.collisions)
+      world.detector.detect() // the step's collisions, loaded anew in every repetition
       val velocity = best {
         world.restore(state)
         solver.load(world.detector.collisions)
