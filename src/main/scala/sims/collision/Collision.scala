@@ -44,7 +44,7 @@ abstract class Collision extends Constraint:
   private[sims] final def pointY(i: Int): Double = { load(); pointYs(i) }
 
   /** Loads the hot copy from `normal` and `points` unless a built-in kind wrote it. */
-  private[collision] def load(): Unit =
+  private[sims] def load(): Unit =
     if pointCount < 0 then
       val n = normal
       normalX = n.x
@@ -100,7 +100,7 @@ abstract class Collision extends Constraint:
       val px = pointXs(i)
       val py = pointYs(i)
       val overlap = Collision.overlapAlong(shape1, shape2, nx, ny)
-      val c = Collision.ToleratedOverlap - overlap
+      val c = sims.Defaults.ToleratedOverlap - overlap
       if c <= 0 then
         val r1x = px - b1.x; val r1y = py - b1.y
         val r2x = px - b2.x; val r2y = py - b2.y
@@ -118,13 +118,10 @@ abstract class Collision extends Constraint:
 object Collision:
   private val NoPoints = new Array[Double](0)
 
-  /** Overlap tolerated by position correction, m: deeper overlap is corrected. */
-  val ToleratedOverlap: Double = 0.01
-
   /** Velocity correction at one contact point (arms r1, r2, normal n, restitution factor 1 + e,
     * friction mu, effective masses m along n and mT along t = n.leftNormal).
     */
-  private[collision] inline def correctVelocityAt(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
+  private[sims] inline def correctVelocityAt(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
       r1x: Double, r1y: Double, r2x: Double, r2y: Double, nx: Double, ny: Double,
       restitutionFactor: Double, mu: Double, m: Double, mT: Double): Unit =
     // Normal part: an inequality constraint, corrected only when the points approach.
@@ -152,7 +149,7 @@ object Collision:
     vx * dx + vy * dy
 
   /** 1 / (1/m1 + (r1 x d)^2/I1 + 1/m2 + (r2 x d)^2/I2), 0 when both bodies are fixed. */
-  private[collision] inline def effectiveMass(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
+  private[sims] inline def effectiveMass(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
       r1x: Double, r1y: Double, r2x: Double, r2y: Double, dx: Double, dy: Double): Double =
     val cr1 = r1x * dy - r1y * dx
     val cr2 = r2x * dy - r2y * dx

@@ -1,7 +1,7 @@
 package sims.collision
 
 import sims.dynamics.{Circle, Shape}
-import sims.geometry.{ConvexPolygon, Segment, Vector2D}
+import sims.geometry.{ConvexPolygon, PolygonMath, Segment, Vector2D}
 
 /** Collision of a convex polygon (the reference) and a circle. The normal is the outward normal
   * of the side the circle penetrates deepest, `(distance to side) - r`, unless a vertex
@@ -22,7 +22,9 @@ final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) 
   private[collision] def compute(polygon: Shape & ConvexPolygon, circle: Circle): Unit =
     reference = polygon
     incident = circle
-    val count = polygon.vertexCount
+    val xs = polygon.vertexXs
+    val ys = polygon.vertexYs
+    val count = xs.length
     val cx = circle.x
     val cy = circle.y
     var sideDistance = Double.PositiveInfinity
@@ -31,25 +33,21 @@ final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) 
     var vertex = 0
     var i = 0
     while i < count do
-      val j = if i + 1 == count then 0 else i + 1
-      val d = Segment.distance(polygon.vertexX(i), polygon.vertexY(i), polygon.vertexX(j), polygon.vertexY(j), cx, cy)
+      val j = PolygonMath.next(i, count)
+      val d = Segment.distance(xs(i), ys(i), xs(j), ys(j), cx, cy)
       if d < sideDistance then { sideDistance = d; side = i }
-      val vx = cx - polygon.vertexX(i)
-      val vy = cy - polygon.vertexY(i)
+      val vx = cx - xs(i)
+      val vy = cy - ys(i)
       val dv = math.sqrt(vx * vx + vy * vy)
       if dv < vertexDistance then { vertexDistance = dv; vertex = i }
       i += 1
     // Penetrations are distance - r for both, so comparing distances compares penetrations.
     if vertexDistance <= sideDistance && vertexDistance > 0 then
-      normalX = (cx - polygon.vertexX(vertex)) / vertexDistance
-      normalY = (cy - polygon.vertexY(vertex)) / vertexDistance
+      normalX = (cx - xs(vertex)) / vertexDistance
+      normalY = (cy - ys(vertex)) / vertexDistance
     else
-      val j = if side + 1 == count then 0 else side + 1
-      val dx = polygon.vertexX(j) - polygon.vertexX(side)
-      val dy = polygon.vertexY(j) - polygon.vertexY(side)
-      val length = math.sqrt(dx * dx + dy * dy)
-      normalX = dy / length // right normal of the side: outward for counter-clockwise vertices
-      normalY = -dx / length
+      normalX = PolygonMath.sideNormalX(xs, ys, count, side)
+      normalY = PolygonMath.sideNormalY(xs, ys, count, side)
     pointXs(0) = circle.x - normalX * circle.radius
     pointYs(0) = circle.y - normalY * circle.radius
     pointCount = 1
@@ -61,15 +59,13 @@ final class PolyCircleCollision(polygon: Shape & ConvexPolygon, circle: Circle) 
 object PolyCircleCollision:
   /** True when a side is within the radius of the centre, or the polygon contains the centre. */
   def colliding(polygon: ConvexPolygon, circle: Circle): Boolean =
-    val count = polygon.vertexCount
+    val xs = polygon.vertexXs
+    val ys = polygon.vertexYs
+    val count = xs.length
     var near = false
-    var inside = true
     var i = 0
     while !near && i < count do
-      val j = if i + 1 == count then 0 else i + 1
-      val ax = polygon.vertexX(i); val ay = polygon.vertexY(i)
-      val bx = polygon.vertexX(j); val by = polygon.vertexY(j)
-      if Segment.distance(ax, ay, bx, by, circle.x, circle.y) - circle.radius <= 0 then near = true
-      if (bx - ax) * (circle.y - ay) - (by - ay) * (circle.x - ax) < 0 then inside = false
+      val j = PolygonMath.next(i, count)
+      if Segment.distance(xs(i), ys(i), xs(j), ys(j), circle.x, circle.y) - circle.radius <= 0 then near = true
       i += 1
-    near || inside
+    near || PolygonMath.contains(xs, ys, count, circle.x, circle.y)

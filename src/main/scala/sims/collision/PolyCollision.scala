@@ -1,7 +1,7 @@
 package sims.collision
 
 import sims.dynamics.Shape
-import sims.geometry.{ConvexPolygon, Vector2D}
+import sims.geometry.{ConvexPolygon, PolygonMath, Vector2D}
 
 /** Collision of two convex polygons, found with the separating axis theorem. For the pair
   * (first, second) the side normals of the second, then of the first, are tried; the one with
@@ -53,7 +53,7 @@ final class PolyCollision(first: Shape & ConvexPolygon, second: Shape & ConvexPo
   private def collect(fromXs: Array[Double], fromYs: Array[Double], insideXs: Array[Double], insideYs: Array[Double]): Unit =
     var i = 0
     while i < fromXs.length do
-      if PolyCollision.contains(insideXs, insideYs, fromXs(i), fromYs(i)) then
+      if PolygonMath.contains(insideXs, insideYs, insideXs.length, fromXs(i), fromYs(i)) then
         pointXs(pointCount) = fromXs(i)
         pointYs(pointCount) = fromYs(i)
         pointCount += 1
@@ -100,21 +100,10 @@ object PolyCollision:
     while !separated && k < total do
       val nx = if k < count2 then secondNxs(k) else firstNxs(k - count2)
       val ny = if k < count2 then secondNys(k) else firstNys(k - count2)
-      // Both ends of each projection in one pass (the same products, so the same extremes).
-      var lower1 = Double.PositiveInfinity; var upper1 = Double.NegativeInfinity
-      var i = 0
-      while i < firstXs.length do
-        val d = firstXs(i) * nx + firstYs(i) * ny
-        if d < lower1 then lower1 = d
-        if d > upper1 then upper1 = d
-        i += 1
-      var lower2 = Double.PositiveInfinity; var upper2 = Double.NegativeInfinity
-      i = 0
-      while i < count2 do
-        val d = secondXs(i) * nx + secondYs(i) * ny
-        if d < lower2 then lower2 = d
-        if d > upper2 then upper2 = d
-        i += 1
+      val lower1 = PolygonMath.projectionMin(firstXs, firstYs, firstXs.length, nx, ny)
+      val upper1 = PolygonMath.projectionMax(firstXs, firstYs, firstXs.length, nx, ny)
+      val lower2 = PolygonMath.projectionMin(secondXs, secondYs, count2, nx, ny)
+      val upper2 = PolygonMath.projectionMax(secondXs, secondYs, count2, nx, ny)
       if stopWhenSeparated && (upper1 < lower2 || upper2 < lower1) then separated = true
       else
         val overlap = sims.geometry.Projection.overlap(lower1, upper1, lower2, upper2)
@@ -140,14 +129,3 @@ object PolyCollision:
 
   private def sideOf(k: Int, second: ConvexPolygon): Int =
     if k < second.vertexCount then k else k - second.vertexCount
-
-  /** True if (x, y) lies inside or on the counter-clockwise polygon with these vertices. */
-  private[collision] def contains(xs: Array[Double], ys: Array[Double], x: Double, y: Double): Boolean =
-    var inside = true
-    var i = 0
-    while inside && i < xs.length do
-      val j = if i + 1 == xs.length then 0 else i + 1
-      val cross = (xs(j) - xs(i)) * (y - ys(i)) - (ys(j) - ys(i)) * (x - xs(i))
-      if cross < 0 then inside = false
-      i += 1
-    inside

@@ -39,25 +39,14 @@ final class Body(initialShapes: Shape*):
   // True when every shape sits on the centre of mass: moving needs no trigonometry then.
   private var allCentred = true
 
-  /** Counts the changes of the body's placement: the narrowphase reuses a pair's last result
-    * while the counts of both its bodies are unchanged.
+  /** Counts the changes of the body's placement and of its inverse masses: whatever is
+    * computed from them (the narrowphase's last result of a pair, a joint's geometry) is still
+    * valid while the count is unchanged.
     */
-  private[sims] var moves: Long = 0
+  private[sims] var placements: Long = 0
 
-  /** Counts placements other than `displace` (pos, rotation, restore, shape changes): jumps of
-    * unknown size, after which `travel` says nothing about where the body went.
-    */
-  private[sims] var jumps: Long = 0
-
-  /** An upper bound of the path the centre has travelled through `displace` calls: it grows by
-    * at least |dx| + |dy| and the rounding of each move, never less. Between two readings, with
-    * `jumps` unchanged, the centre moved at most the difference; the narrowphase uses it to
-    * keep a pair of centred shapes known to be apart without recomputing it.
-    */
-  private[sims] var travel: Double = 0
-
-  /** True when every shape sits on the centre of mass (so shapes move exactly as the centre). */
-  private[sims] def centred: Boolean = allCentred
+  /** The index of this body in its world's bodies, or -1 outside a world. */
+  private[sims] var index: Int = -1
 
   /** The world this body is in, or null. */
   private[sims] var world: World = null
@@ -66,8 +55,7 @@ final class Body(initialShapes: Shape*):
 
   /** Recomputes mass, centre of mass, inertia and the shapes' offsets from their positions. */
   private[sims] def shapesChanged(): Unit =
-    moves += 1
-    jumps += 1
+    placements += 1
     var m, sx, sy = 0.0
     for s <- shapes do
       m += s.mass
@@ -97,11 +85,7 @@ final class Body(initialShapes: Shape*):
 
   /** Places every shape from the body's centre and rotation. */
   private[sims] def placeShapes(): Unit =
-    jumps += 1
-    place()
-
-  private def place(): Unit =
-    moves += 1
+    placements += 1
     if allCentred then
       var i = 0
       while i < shapeArray.length do
@@ -122,9 +106,7 @@ final class Body(initialShapes: Shape*):
       x += dx
       y += dy
       angle += dAngle
-      // Rounded up, so that it never falls behind the true path, rounding of x and y included.
-      travel = Math.nextUp(travel + (math.abs(dx) + math.abs(dy) + Shape.RoundingPerMove * (math.abs(x) + math.abs(y) + 1)))
-      place()
+      placeShapes()
 
   /** Adds the impulse (px, py) acting at offset (rx, ry) from the centre (solver use). */
   private[sims] def impulseAt(px: Double, py: Double, rx: Double, ry: Double): Unit =
@@ -197,7 +179,7 @@ final class Body(initialShapes: Shape*):
 
   /** Fixes or frees the body; fixing it also sets both velocities to 0. */
   def fixed_=(value: Boolean): Unit =
-    moves += 1 // the inverse masses change: cached effective masses must be recomputed
+    placements += 1 // the inverse masses change: cached effective masses must be recomputed
     _fixed = value
     if value then
       vx = 0; vy = 0; w = 0

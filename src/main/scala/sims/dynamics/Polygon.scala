@@ -1,7 +1,7 @@
 package sims.dynamics
 
 import scala.collection.immutable.ArraySeq
-import sims.geometry.{AABB, ConvexPolygon, Projection, Vector2D}
+import sims.geometry.{AABB, ConvexPolygon, PolygonMath, Projection, Vector2D}
 
 /** A convex polygonal shape defined by its vertices around its centre at rotation 0
   * (counter-clockwise). World vertices are recomputed lazily after the shape moves, into
@@ -58,16 +58,7 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   private def refreshNormals(): Unit =
     refresh()
     if !normalsCurrent then
-      // The same expressions as ConvexPolygon.sideNormalX/Y (so the same normals as its
-      // default sideNormalXs/Ys), evaluated once per move.
-      var i = 0
-      while i < count do
-        val j = if i + 1 == count then 0 else i + 1
-        val dx = worldX(j) - worldX(i)
-        val dy = worldY(j) - worldY(i)
-        normalX(i) = dy / math.sqrt(dx * dx + dy * dy)
-        normalY(i) = -dx / math.sqrt(dx * dx + dy * dy)
-        i += 1
+      PolygonMath.sideNormals(worldX, worldY, count, normalX, normalY)
       normalsCurrent = true
 
   def vertices: IndexedSeq[Vector2D] =
@@ -75,8 +66,6 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
     ArraySeq.tabulate(count)(i => Vector2D(worldX(i), worldY(i)))
 
   override private[sims] def vertexCount: Int = count
-  override private[sims] def vertexX(i: Int): Double = { refresh(); worldX(i) }
-  override private[sims] def vertexY(i: Int): Double = { refresh(); worldY(i) }
   // The library polygon's own arrays, current: no copy.
   override private[sims] def vertexXs: Array[Double] = { refresh(); worldX }
   override private[sims] def vertexYs: Array[Double] = { refresh(); worldY }
@@ -84,16 +73,7 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   override private[sims] def sideNormalYs: Array[Double] = { refreshNormals(); normalY }
 
   override def project(axis: Vector2D): Projection =
-    refresh()
-    var lower = Double.PositiveInfinity
-    var upper = Double.NegativeInfinity
-    var i = 0
-    while i < count do
-      val p = worldX(i) * axis.x + worldY(i) * axis.y
-      if p < lower then lower = p
-      if p > upper then upper = p
-      i += 1
-    Projection(axis, lower, upper)
+    Projection(axis, projectMin(axis.x, axis.y), projectMax(axis.x, axis.y))
 
   override def AABB: AABB =
     refresh()
@@ -101,34 +81,15 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
 
   override def contains(point: Vector2D): Boolean =
     refresh()
-    var inside = true
-    var i = 0
-    while inside && i < count do
-      val j = if i + 1 == count then 0 else i + 1
-      val cross = (worldX(j) - worldX(i)) * (point.y - worldY(i)) - (worldY(j) - worldY(i)) * (point.x - worldX(i))
-      if cross < 0 then inside = false
-      i += 1
-    inside
+    PolygonMath.contains(worldX, worldY, count, point.x, point.y)
 
   override private[sims] def projectMin(ax: Double, ay: Double): Double =
     refresh()
-    var lower = Double.PositiveInfinity
-    var i = 0
-    while i < count do
-      val p = worldX(i) * ax + worldY(i) * ay
-      if p < lower then lower = p
-      i += 1
-    lower
+    PolygonMath.projectionMin(worldX, worldY, count, ax, ay)
 
   override private[sims] def projectMax(ax: Double, ay: Double): Double =
     refresh()
-    var upper = Double.NegativeInfinity
-    var i = 0
-    while i < count do
-      val p = worldX(i) * ax + worldY(i) * ay
-      if p > upper then upper = p
-      i += 1
-    upper
+    PolygonMath.projectionMax(worldX, worldY, count, ax, ay)
 
   override private[sims] def minX: Double = { refresh(); boxMinX }
   override private[sims] def minY: Double = { refresh(); boxMinY }

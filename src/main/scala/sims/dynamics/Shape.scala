@@ -48,7 +48,7 @@ abstract class Shape:
     place(x, y, newRotation)
     if body != null then body.shapesChanged()
 
-  private var _restitution = Shape.DefaultRestitution
+  private var _restitution = sims.Defaults.Restitution
 
   /** Coefficient of restitution; a collision uses the product of both shapes' values. */
   def restitution: Double = _restitution
@@ -58,7 +58,7 @@ abstract class Shape:
     Shape.requireNonNegative("restitution", value)
     _restitution = value
 
-  private var _friction = Shape.DefaultFriction
+  private var _friction = sims.Defaults.Friction
 
   /** Coefficient of friction; a collision uses the product of both shapes' values. */
   def friction: Double = _friction
@@ -81,11 +81,6 @@ abstract class Shape:
 
   /** Order in which the shape joined a world (-1 outside any world); orders broadphase pairs. */
   private[sims] var worldIndex: Int = -1
-
-  /** The index of this shape's body in its world's bodies (-1 outside any world): a key of the
-    * body for the contact solver's ordering, kept here where the solver reads the shapes.
-    */
-  private[sims] var bodyKey: Int = -1
 
   /** The smallest axis-aligned box around the shape. */
   def AABB: AABB
@@ -128,19 +123,8 @@ abstract class Shape:
       throw IllegalArgumentException(
         s"cannot change the $what of a shape whose body is already in a world")
 
-/** Defaults and checks shared by all shapes. */
+/** Checks shared by all shapes. */
 object Shape:
-  /** Default coefficient of restitution of a new shape. */
-  val DefaultRestitution: Double = 0.7
-
-  /** Default coefficient of friction of a new shape. */
-  val DefaultFriction: Double = 0.707
-
-  /** Bound of the rounding error of one move of a body, per unit of coordinate magnitude
-    * (a few ulps), for the narrowphase's travel bounds.
-    */
-  private[sims] val RoundingPerMove: Double = 1e-15
-
   /** Fails unless `value` is finite and strictly positive. */
   private[sims] def requirePositive(name: String, value: Double): Double =
     if !(value > 0) || value.isInfinite then

@@ -1,20 +1,30 @@
 package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
+import sims.Defaults
 import sims.collision.{Collision, Detector, GridDetector}
-import sims.dynamics.joints.{ForceJoint, Joint}
+import sims.dynamics.joints.Joint
 import sims.geometry.Vector2D
+import sims.solver.{ClassicStep, Solver}
 
 /** A world of bodies and joints, stepped in time by `step()` (documentation chapters 3 and 4).
   *
-  * The collision detector is `GridDetector(this)` unless replaced when the world is created:
-  * `new World { override val detector = MyDetector(this) }` (documentation 5.3).
+  * The world keeps the bookkeeping: bodies, joints, shapes, time and settings. What one step
+  * does is its `solver`'s: [[sims.solver.ClassicStep]] (SiMS 1.2's step, SPEC section 2) unless
+  * another is chosen. The world checks the state after each stage of a step and runs the
+  * post-step hook.
+  *
+  * The collision detector is made by `makeDetector` when the world is created, a
+  * [[sims.collision.GridDetector]] unless another is given: `World(MyDetector(_))`. (The
+  * documentation's `new World { override val detector = MyDetector(this) }` works too, but
+  * builds and drops a grid detector first.)
   */
-class World:
-  private var _timeStep = World.DefaultTimeStep
-  private var _iterations = World.DefaultIterations
-  private var _gravity = World.DefaultGravity
+class World(makeDetector: World => Detector = GridDetector(_)):
+  private var _timeStep = Defaults.TimeStep
+  private var _iterations = Defaults.Iterations
+  private var _gravity = Defaults.Gravity
   private var _time = 0.0
+  private var _solver: Solver = ClassicStep
   private val bodyBuffer = ArrayBuffer.empty[Body]
   private val jointBuffer = ArrayBuffer.empty[Joint]
   // All shapes in joining order; the array the detector reads is rebuilt from it only when
@@ -24,10 +34,11 @@ class World:
   private var shapesChanged = false
   private var nextShapeIndex = 0
   private val beforeStep = WorldState.empty
-  private val contacts = sims.collision.ContactSolver()
+  // Per-world data of the solvers this world has stepped with (see `workspace`).
+  private val workspaces = ArrayBuffer.empty[AnyRef]
 
   /** The collision detector used by `step()`. */
-  val detector: Detector = GridDetector(this)
+  val detector: Detector = makeDetector(this)
 
   /** Whether collisions are detected and corrected. */
   var enableCollisionDetection: Boolean = true
@@ -35,13 +46,23 @@ class World:
   /** Whether phase 6 (position correction) runs. */
   var enablePositionCorrection: Boolean = true
 
+  /** What `step()` runs (default [[sims.solver.ClassicStep]]); may be switched at any time. */
+  def solver: Solver = _solver
+
+  /** Chooses the solver of the next steps; must not be null. */
+  def solver_=(value: Solver): Unit =
+    if value == null then throw IllegalArgumentException("solver must not be null")
+    _solver = value
+
   /** Duration of one step in seconds (default 1/60). */
   def timeStep: Double = _timeStep
 
   /** Sets the step duration; must be positive and finite. */
   def timeStep_=(h: Double): Unit = _timeStep = Shape.requirePositive("timeStep", h)
 
-  /** Number of velocity and of position correction iterations per step (default 10). */
+  /** Number of velocity and of position correction iterations per step of the classic step
+    * (default 10).
+    */
   def iterations: Int = _iterations
 
   /** Sets the number of iterations; must be at least 1. */
@@ -75,7 +96,11 @@ class World:
       shapesChanged = false
     shapeArray
 
-  /** The collisions found in the last step (after its last correction), e.g. to draw them. */
+  /** The collisions the detector found last (in the classic step: after the last position
+    * correction of the last step), e.g. to draw them. The objects are the detector's own: the
+    * built-in detector refills them in place at its next `detect()` or `refresh()`, so they
+    * describe the last step until the next `step()`; copy what you need to keep.
+    */
   def collisions: collection.IndexedSeq[Collision] = detector.collisions
 
   /** Adds a body; fails if it is already in this or another world. */
@@ -84,10 +109,10 @@ class World:
     if body.world eq this then throw IllegalArgumentException(s"body $body is already in this world")
     if body.world != null then throw IllegalArgumentException(s"body $body is already in another world")
     body.world = this
+    body.index = bodyBuffer.length
     bodyBuffer += body
     for s <- body.shapes do
       s.worldIndex = nextShapeIndex
-      s.bodyKey = bodyBuffer.length - 1
       nextShapeIndex += 1
     shapeList ++= body.shapes
     shapesChanged = true
@@ -108,9 +133,10 @@ class World:
     if i >= 0 then
       bodyBuffer.remove(i)
       body.world = null
-      body.shapes.foreach { s => s.worldIndex = -1; s.bodyKey = -1 }
-      // The later bodies move down one place: their keys follow, so keys stay 0 until n.
-      for j <- i until bodyBuffer.length; s <- bodyBuffer(j).shapes do s.bodyKey = j
+      body.index = -1
+      body.shapes.foreach(_.worldIndex = -1)
+      // The later bodies move down one place: their indices follow.
+      for j <- i until bodyBuffer.length do bodyBuffer(j).index = j
       shapeList.filterInPlace(_.body ne body)
       shapesChanged = true
     this
@@ -124,27 +150,15 @@ class World:
   /** Run after each step (phase 7); override it to observe or steer the simulation. */
   def postStep(): Unit = ()
 
-  /** Simulates one time step: the phases of SPEC section 2, in order. If a phase produces a
-    * non-finite force, velocity or position, the world is restored to its state before the step and
-    * an ArithmeticException names the body and the phase.
+  /** Simulates one time step with the `solver`. If a stage produces a non-finite force,
+    * velocity or position, the world is restored to its state before the step and an
+    * ArithmeticException names the body and the stage.
     */
   def step(): Unit =
     checkJoints()
     beforeStep.save(this)
-    val h = _timeStep
-    _time += h                       // phase 1
-    applyJointForces()               // phase 2
-    guard("joint forces", Checked.Forces)
-    integrateAccelerations(h)        // phase 3
-    guard("integration of accelerations", Checked.Velocities)
-    correctVelocities(h)             // phase 4
-    guard("velocity correction", Checked.Velocities)
-    integrateVelocities(h)           // phase 5
-    guard("integration of velocities", Checked.Positions)
-    if enablePositionCorrection then
-      correctPositions(h)            // phase 6
-      guard("position correction", Checked.Positions)
-    postStep()                       // phase 7
+    _solver.step(this)
+    postStep()
 
   /** A copy of the dynamic state of every body and of the time, to `restore` later. */
   def snapshot(): WorldState =
@@ -157,6 +171,25 @@ class World:
 
   private[sims] def time_=(t: Double): Unit = _time = t
 
+  /** The bodies, for the solvers' loops (not to be modified). */
+  private[sims] def bodyList: ArrayBuffer[Body] = bodyBuffer
+
+  /** The joints, for the solvers' loops (not to be modified). */
+  private[sims] def jointList: ArrayBuffer[Joint] = jointBuffer
+
+  /** This world's data of one kind of solver (its scratch arrays, its contact table), made by
+    * `create` the first time the world steps with a solver of that kind and kept while the
+    * world lives, so switching solvers back and forth keeps each one's data.
+    */
+  private[sims] def workspace[W <: AnyRef](kind: Class[W], create: => W): W =
+    var i = 0
+    while i < workspaces.length && !kind.isInstance(workspaces(i)) do i += 1
+    if i < workspaces.length then workspaces(i).asInstanceOf[W]
+    else
+      val made = create
+      workspaces += made
+      made
+
   private def checkJoints(): Unit =
     var i = 0
     while i < jointBuffer.length do
@@ -165,101 +198,28 @@ class World:
         throw IllegalArgumentException(s"joint $j connects a body that is not in this world")
       i += 1
 
-  private def applyJointForces(): Unit =
-    var i = 0
-    while i < jointBuffer.length do
-      jointBuffer(i) match
-        case f: ForceJoint => f.applyForce()
-        case _ => ()
-      i += 1
-
-  private def integrateAccelerations(h: Double): Unit =
-    val gx = _gravity.x
-    val gy = _gravity.y
+  /** Called by a solver after each stage of a step: throws, after restoring the state before
+    * the step, if any body's checked quantity is no longer finite.
+    */
+  private[sims] def guard(phase: String, checked: Checked): Unit =
     var i = 0
     while i < bodyBuffer.length do
       val b = bodyBuffer(i)
-      if !b.fixed then
-        val m = b.mass
-        b.fx += gx * m
-        b.fy += gy * m
-        b.vx += (b.fx / m) * h
-        b.vy += (b.fy / m) * h
-        b.w += (b.tau / b.I) * h
-      i += 1
-
-  private def correctVelocities(h: Double): Unit =
-    if enableCollisionDetection then
-      detector.detect()
-      contacts.load(detector.collisions)
-    else contacts.clear()
-    var iteration = 0
-    while iteration < _iterations do
-      var i = 0
-      while i < jointBuffer.length do
-        jointBuffer(i).correctVelocity(h)
-        i += 1
-      contacts.correctVelocities(h)
-      iteration += 1
-
-  private def integrateVelocities(h: Double): Unit =
-    var i = 0
-    while i < bodyBuffer.length do
-      val b = bodyBuffer(i)
-      if math.sqrt(b.vx * b.vx + b.vy * b.vy) < World.SpeedThreshold then
-        b.vx = 0; b.vy = 0
-      if math.abs(b.w) < World.SpeedThreshold then b.w = 0
-      b.displace(b.vx * h, b.vy * h, b.w * h)
-      b.fx = 0; b.fy = 0; b.tau = 0
-      i += 1
-
-  private def correctPositions(h: Double): Unit =
-    var iteration = 0
-    while iteration < _iterations do
-      var i = 0
-      while i < jointBuffer.length do
-        jointBuffer(i).correctPosition(h)
-        i += 1
-      if enableCollisionDetection then
-        detector.refresh()
-        val collisions = detector.collisions
-        i = 0
-        while i < collisions.length do
-          collisions(i).correctPosition(h)
-          i += 1
-      iteration += 1
-
-  /** Throws, after restoring the state before the step, if any body is no longer finite. */
-  private def guard(phase: String, checked: Checked): Unit =
-    var i = 0
-    while i < bodyBuffer.length do
-      val b = bodyBuffer(i)
-      val finite = checked match
-        case Checked.Forces => World.finite(b.fx) && World.finite(b.fy) && World.finite(b.tau)
-        case Checked.Velocities => World.finite(b.vx) && World.finite(b.vy) && World.finite(b.w)
-        case Checked.Positions => World.finite(b.x) && World.finite(b.y) && World.finite(b.angle)
-      if !finite then
+      val ok = checked match
+        case Checked.Forces => finite(b.fx) && finite(b.fy) && finite(b.tau)
+        case Checked.Velocities => finite(b.vx) && finite(b.vy) && finite(b.w)
+        case Checked.Positions => finite(b.x) && finite(b.y) && finite(b.angle)
+      if !ok then
         val message = s"non-finite ${checked.quantity} of body $i ($b) in phase '$phase'; the world was restored to its state before the step"
         beforeStep.load(this)
         throw ArithmeticException(message)
       i += 1
 
-  /** What a guard checks after a phase. */
-  private enum Checked(val quantity: String):
-    case Forces extends Checked("force")
-    case Velocities extends Checked("velocity")
-    case Positions extends Checked("position")
-
-/** Defaults of a new [[World]]. */
-object World:
-  /** Default time step, s. */
-  val DefaultTimeStep: Double = 1.0 / 60
-  /** Default number of correction iterations. */
-  val DefaultIterations: Int = 10
-  /** Default gravity, m/s^2. */
-  val DefaultGravity: Vector2D = Vector2D(0, -9.81)
-  /** Linear (m/s) and angular (rad/s) speeds below this become exactly 0 in phase 5. */
-  val SpeedThreshold: Double = 0.0001
-
   // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
   private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
+
+/** What the world's guard checks after a stage of a step. */
+private[sims] enum Checked(val quantity: String):
+  case Forces extends Checked("force")
+  case Velocities extends Checked("velocity")
+  case Positions extends Checked("position")

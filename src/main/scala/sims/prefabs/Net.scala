@@ -1,5 +1,7 @@
 package sims.prefabs
 
+import sims.Defaults
+
 import sims.dynamics.{Body, Circle}
 import sims.dynamics.joints.{DistanceJoint, Joint}
 import sims.geometry.Vector2D
@@ -14,8 +16,8 @@ import sims.geometry.Vector2D
   * @param nodeRadius radius of each node's circle, m
   * @param density    density of the nodes, kg/m^2
   */
-final class Net(val width: Int, val height: Int, val position: Vector2D, val spacing: Double = Net.DefaultSpacing,
-    val nodeRadius: Double = Net.DefaultNodeRadius, val density: Double = Net.DefaultDensity) extends Prefab:
+final class Net(val width: Int, val height: Int, val position: Vector2D, val spacing: Double = Defaults.NetSpacing,
+    val nodeRadius: Double = Defaults.NetNodeRadius, val density: Double = Defaults.NetDensity) extends Prefab:
   if width < 1 || height < 1 then throw IllegalArgumentException(s"a Net needs at least 1 x 1 nodes, got $width x $height")
   if !(spacing > 2 * nodeRadius) || spacing.isInfinite then
     throw IllegalArgumentException(s"spacing must be finite and above the node diameter ${2 * nodeRadius}, got $spacing")
@@ -40,12 +42,3 @@ final class Net(val width: Int, val height: Int, val position: Vector2D, val spa
       column <- 0 until width
       neighbour <- Seq((column + 1, row), (column, row + 1)) if neighbour._1 < width && neighbour._2 < height
     yield link(node(column, row), node(neighbour._1, neighbour._2))
-
-/** Defaults of [[Net]]. */
-object Net:
-  /** Default distance between neighbouring nodes, m. */
-  val DefaultSpacing: Double = 0.3
-  /** Default node radius, m. */
-  val DefaultNodeRadius: Double = 0.05
-  /** Default node density, kg/m^2. */
-  val DefaultDensity: Double = 10

@@ -1,5 +1,7 @@
 package sims.prefabs
 
+import sims.Defaults
+
 import sims.dynamics.{Body, Circle}
 import sims.dynamics.joints.{DistanceJoint, Joint}
 import sims.geometry.Vector2D
@@ -15,9 +17,9 @@ import sims.geometry.Vector2D
   * @param nodeRadius radius of each node's circle, m
   * @param density    density of the nodes, kg/m^2
   */
-final class Pylon(val position: Vector2D, val levels: Int = Pylon.DefaultLevels, val width: Double = Pylon.DefaultWidth,
-    val levelHeight: Double = Pylon.DefaultLevelHeight, val nodeRadius: Double = Pylon.DefaultNodeRadius,
-    val density: Double = Pylon.DefaultDensity) extends Prefab:
+final class Pylon(val position: Vector2D, val levels: Int = Defaults.PylonLevels, val width: Double = Defaults.PylonWidth,
+    val levelHeight: Double = Defaults.PylonLevelHeight, val nodeRadius: Double = Defaults.PylonNodeRadius,
+    val density: Double = Defaults.PylonDensity) extends Prefab:
   if levels < 1 then throw IllegalArgumentException(s"a Pylon needs at least 1 level, got $levels")
   if !(width > 2 * nodeRadius) || !(levelHeight > 2 * nodeRadius) || width.isInfinite || levelHeight.isInfinite then
     throw IllegalArgumentException(s"width and levelHeight must be finite and above the node diameter, got $width, $levelHeight")
@@ -46,16 +48,3 @@ final class Pylon(val position: Vector2D, val levels: Int = Pylon.DefaultLevels,
           else link(node(level, 1), node(level + 1, 0))
         Seq(crossbar, link(node(level, 0), node(level + 1, 0)), link(node(level, 1), node(level + 1, 1)), diagonal)
     }
-
-/** Defaults of [[Pylon]]. */
-object Pylon:
-  /** Default number of levels. */
-  val DefaultLevels: Int = 10
-  /** Default distance between the columns, m. */
-  val DefaultWidth: Double = 1.0
-  /** Default panel height, m. */
-  val DefaultLevelHeight: Double = 1.0
-  /** Default node radius, m. */
-  val DefaultNodeRadius: Double = 0.15
-  /** Default node density, kg/m^2. */
-  val DefaultDensity: Double = 10

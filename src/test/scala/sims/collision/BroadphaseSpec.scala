@@ -17,7 +17,7 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
       j <- i + 1 until shapes.length
       a = shapes(i)
       b = shapes(j)
-      if GridDetector.candidates(a, b)
+      if a.AABB.overlaps(b.AABB) && PairFilter.accepts(a, b)
     yield (a, b)
 
   private val shape: Gen[Shape] =

@@ -4,6 +4,7 @@ import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import sims.dynamics.{Body, Circle, Rectangle, Shape}
 import sims.geometry.Vector2D
+import sims.solver.ContactSolver
 
 /** The world's contact solver must correct velocities exactly as calling each collision's own
   * `correctVelocity` in order would: same order, same arithmetic, same bits.

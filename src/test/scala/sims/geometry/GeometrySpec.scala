@@ -78,6 +78,6 @@ class GeometrySpec extends AnyFunSuite with Matchers:
     Triangle.contains(Vector2D(1, 1)) shouldBe true // on the hypotenuse
     Triangle.contains(Vector2D(1.5, 1.5)) shouldBe false
     Triangle.vertexCount shouldBe 3
-    Triangle.vertexX(1) shouldBe 2.0
-    Triangle.vertexY(2) shouldBe 2.0
+    Triangle.vertexXs(1) shouldBe 2.0
+    Triangle.vertexYs(2) shouldBe 2.0
   }

@@ -24,7 +24,7 @@ class NetSpec extends AnyFunSuite:
     assert(pairs.contains((net.node(0, 0), net.node(0, 1))))
     assert(!pairs.contains((net.node(0, 0), net.node(1, 1))), "no diagonals")
     for j <- net.joints do
-      assert(math.abs(j.asInstanceOf[DistanceJoint].distance - Net.DefaultSpacing) < 1e-12)
+      assert(math.abs(j.asInstanceOf[DistanceJoint].distance - sims.Defaults.NetSpacing) < 1e-12)
 
   test("a single node has no joints; bad sizes are refused"):
     assert(Net(1, 1, Vector2D.Null).joints.isEmpty)
@@ -39,7 +39,7 @@ class NetSpec extends AnyFunSuite:
     assert(world.bodies.size == 100 && world.joints.size == 180)
     for _ <- 1 to 180 do world.step()
     val corner = net.node(0, 9).pos
-    assert(corner == Vector2D(0, 9 * Net.DefaultSpacing), "the fixed corner stays")
+    assert(corner == Vector2D(0, 9 * sims.Defaults.NetSpacing), "the fixed corner stays")
     assert(net.node(9, 0).pos.y < corner.y - 1, "the free corner has fallen below the fixed one")
     val worstStretch = net.joints.map { case j: DistanceJoint => math.abs((j.connection2 - j.connection1).length - j.distance) / j.distance; case _ => 0.0 }.max
     // With 10 solver iterations the links near the fixed corner, which carry the other 99

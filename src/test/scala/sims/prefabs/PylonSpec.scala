@@ -34,9 +34,9 @@ class PylonSpec extends AnyFunSuite:
     val groundBody = ground.asBody
     groundBody.fixed = true
     world += groundBody
-    val pylon = Pylon(Vector2D(-0.5, Pylon.DefaultNodeRadius), levels = 6)
+    val pylon = Pylon(Vector2D(-0.5, sims.Defaults.PylonNodeRadius), levels = 6)
     pylon.addTo(world)
     for _ <- 1 to 300 do world.step()
     val top = pylon.node(6, 0).pos
-    assert(math.abs(top.y - (6 + Pylon.DefaultNodeRadius)) < 0.2, s"top node at $top")
+    assert(math.abs(top.y - (6 + sims.Defaults.PylonNodeRadius)) < 0.2, s"top node at $top")
     assert(math.abs(top.x + 0.5) < 0.2, s"top node at $top")

@@ -98,7 +98,7 @@ class RagdollSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCheck
   test("with the default iterations a ragdoll thrown hard stays whole and finite") {
     forAll(Gen.choose(-3.0, 3.0), Gen.choose(-4.0, 4.0), Gen.choose(0.2, 2.0), minSuccessful(4)) {
       (throwSpeed, spin, height) =>
-        val (ragdoll, worstSeparation, lateKinetic, released) = fall(throwSpeed, spin, height, World.DefaultIterations, 6)
+        val (ragdoll, worstSeparation, lateKinetic, released) = fall(throwSpeed, spin, height, sims.Defaults.Iterations, 6)
         info(f"thrown at $throwSpeed%.2f m/s, spin $spin%.2f rad/s, from $height%.2f m: largest joint separation $worstSeparation%.2e m")
         worstSeparation should be < 0.1
         ragdoll.bodies.foreach(_.pos.isFinite shouldBe true)
@@ -110,7 +110,7 @@ class RagdollSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCheck
     // RevoluteJoint's fallback for wide-open pins; an earlier figure with hands and feet of their
     // own sent parts off at 1e8 m/s without it).
     for (throwSpeed, spin, height) <- Seq((-1.07, -1.33, 1.03), (0.5, 2.0, 1.5), (2.0, -3.0, 0.5), (-2.5, 1.0, 2.0)) do
-      val (ragdoll, _, _, _) = fall(throwSpeed, spin, height, World.DefaultIterations, 8, jammed = true)
+      val (ragdoll, _, _, _) = fall(throwSpeed, spin, height, sims.Defaults.Iterations, 8, jammed = true)
       ragdoll.bodies.foreach(b => b.linearVelocity.length should be < 50.0)
   }
 

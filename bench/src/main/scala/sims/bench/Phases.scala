@@ -1,6 +1,6 @@
 package sims.bench
 
-import sims.collision.ContactSolver
+import sims.solver.ContactSolver
 import sims.dynamics.World
 
 /** Where a SiMS step spends its time, without JMH: for each scene given, the warm-up steps,
@@ -12,7 +12,7 @@ import sims.dynamics.World
   *   - velocity: loading the contacts and their ten velocity iterations (phase 4 without
   *     joints);
   *   - position: the step minus the same step with position correction off (phase 6);
-  * and the step's contact points, their waves (see `sims.collision.WaveOrder`) and the
+  * and the step's contact points, their waves (see `sims.solver.WaveOrder`) and the
   * candidate pairs by shape classes.
   * A restore moves every body, so the narrowphase's caches start each repetition empty: the
   * figures are a little above a step's in a running scene. For development; the committed

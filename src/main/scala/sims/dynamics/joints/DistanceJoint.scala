@@ -66,10 +66,10 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
   // mass m, and whether the connection points are apart (else there is no direction).
   private var length, ux, uy, r1x, r1y, r2x, r2y, m = 0.0
   private var apart = false
-  // The bodies' move counts when phase 4 last measured: velocity correction needs only
+  // The bodies' placement counts when phase 4 last measured: velocity correction needs only
   // positions besides the velocities, and phase 4 does not move bodies, so one measurement
   // per step serves all its iterations.
-  private var moves1, moves2 = -1L
+  private var placements1, placements2 = -1L
 
   /** Measures the joint from the current positions and rotations. */
   private def measure(): Unit =
@@ -89,10 +89,10 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
       m = effectiveMass(ux, uy, r1x, r1y, r2x, r2y)
 
   def correctVelocity(h: Double): Unit =
-    if moves1 != node1.moves || moves2 != node2.moves then
+    if placements1 != node1.placements || placements2 != node2.placements then
       measure()
-      moves1 = node1.moves
-      moves2 = node2.moves
+      placements1 = node1.placements
+      placements2 = node2.placements
     if apart then
       // Relative velocity of the connection points: v + w x r of each body.
       val vx = (node2.vx - node2.w * r2y) - (node1.vx - node1.w * r1y)
@@ -109,7 +109,9 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
       val c = length - distance
       val px = -ux * m * c
       val py = -uy * m * c
-      // Division by the mass (infinite when fixed) as in the formula, not multiplication by invMass.
+      // Division by the mass (infinite when fixed), the SPEC's -P/m1, where the other joints and
+      // the contacts multiply by 1/m: the golden hashes pin both, and x / m and x * (1/m) differ
+      // in the last bit (measured: multiplying here changes the golden "mixed" scene's hash).
       node1.displace(-(px / node1.mass), -(py / node1.mass), -((r1x * py - r1y * px) / node1.I))
       node2.displace(px / node2.mass, py / node2.mass, (r2x * py - r2y * px) / node2.I)
 

@@ -1,7 +1,9 @@
 package sims.dynamics.joints
 
+import sims.Defaults
+
 import sims.dynamics.{Body, Circle, World}
-import sims.geometry.{Matrix22, Vector2D}
+import sims.geometry.Vector2D
 
 /** Pulls a point of a body towards a target point with a bounded force: what the viewer uses to
   * drag bodies with the mouse. Not part of the original SiMS.
@@ -46,18 +48,18 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
 
   /** A fixed body at the target, in no world: the other end of the joint. */
   val node1: Body =
-    val ground = Circle(MouseJoint.GroundRadius, 1).asBody
+    val ground = Circle(0.01, 1).asBody // its size does not matter: it only has to exist
     ground.pos = anchor
     ground.fixed = true
     ground
 
   checkNodes()
 
-  private val point = BodyPoint(node2, anchor)
+  private val point = Anchor(node2, anchor)
   private var _target = anchor
-  private var _frequency = MouseJoint.DefaultFrequency
-  private var _dampingRatio = MouseJoint.DefaultDampingRatio
-  private var _angularDamping = MouseJoint.DefaultAngularDamping
+  private var _frequency = Defaults.MouseFrequency
+  private var _dampingRatio = Defaults.MouseDampingRatio
+  private var _angularDamping = Defaults.MouseAngularDamping
   // True from phase 2 until the first velocity correction of the step.
   private var stepStarting = false
   // Impulse applied so far in the current step.
@@ -131,18 +133,18 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
       val betaOverH = stiffness / (damping + h * stiffness)
       val invI = b.invI
       val offDiagonal = -invI * rx * ry
-      val k = Matrix22(
-        b.invMass + invI * ry * ry + gamma, offDiagonal,
-        offDiagonal, b.invMass + invI * rx * rx + gamma)
+      val k11 = b.invMass + invI * ry * ry + gamma
+      val k22 = b.invMass + invI * rx * rx + gamma
       val cdotX = b.vx - b.w * ry
       val cdotY = b.vy + b.w * rx
       val rhsX = cdotX + betaOverH * (point.x - _target.x) + gamma * impulseX
       val rhsY = cdotY + betaOverH * (point.y - _target.y) + gamma * impulseY
-      val step = k.solve(Vector2D(-rhsX, -rhsY))
+      // (K + gamma E) dLambda = -rhs; K + gamma E is positive definite (gamma > 0).
+      val determinant = k11 * k22 - offDiagonal * offDiagonal
       val oldX = impulseX
       val oldY = impulseY
-      impulseX += step.x
-      impulseY += step.y
+      impulseX += (k22 * -rhsX - offDiagonal * -rhsY) / determinant
+      impulseY += (k11 * -rhsY - offDiagonal * -rhsX) / determinant
       val maxImpulse = maxForce * h
       val size = math.sqrt(impulseX * impulseX + impulseY * impulseY)
       if size > maxImpulse then
@@ -153,14 +155,3 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
   def correctPosition(h: Double): Unit = ()
 
   override def toString: String = s"MouseJoint($node2, target = $_target, maxForce = $maxForce)"
-
-/** Defaults of a [[MouseJoint]]. */
-object MouseJoint:
-  /** Default natural frequency, Hz. */
-  val DefaultFrequency: Double = 5.0
-  /** Default damping ratio. */
-  val DefaultDampingRatio: Double = 0.7
-  /** Default damping of the dragged body's rotation, 1/s. */
-  val DefaultAngularDamping: Double = 1.0
-  /** Radius of the internal ground body's circle, m (it only needs to exist). */
-  private val GroundRadius: Double = 0.01

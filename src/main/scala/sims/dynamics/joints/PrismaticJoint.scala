@@ -1,7 +1,7 @@
 package sims.dynamics.joints
 
 import sims.dynamics.Body
-import sims.geometry.{Matrix22, Vector2D}
+import sims.geometry.Vector2D
 
 /** Lets body 2 slide along a line fixed on body 1, without turning relative to it.
   *
@@ -32,8 +32,8 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
   if anchor1 == anchor2 then
     throw IllegalArgumentException(s"anchor1 and anchor2 must differ to give the line a direction, both are $anchor1")
 
-  private val point1 = BodyPoint(node1, anchor1)
-  private val point2 = BodyPoint(node2, anchor2)
+  private val point1 = Anchor(node1, anchor1)
+  private val point2 = Anchor(node2, anchor2)
   // Direction of the line in body 1's own frame.
   private val localAxis = (anchor2 - anchor1).unit.rotate(-node1.rotation)
   private val localAxisX = localAxis.x
@@ -78,14 +78,24 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     angular1 = reachX * normalY - reachY * normalX
     angular2 = point2.armX * normalY - point2.armY * normalX
 
-  /** K for the geometry set by `prepare()`. */
-  private def effectiveMassMatrix: Matrix22 =
+  // The solution of the last `solve`: fields rather than an object, so iterations allocate nothing.
+  private var lineImpulse, turnImpulse = 0.0
+
+  /** Solves K lambda = (lineRight, turnRight) for the geometry set by `prepare()`, K as in the
+    * derivation; lambda = 0 when K is singular (both bodies fixed).
+    */
+  private def solve(lineRight: Double, turnRight: Double): Unit =
     val invI1 = node1.invI
     val invI2 = node2.invI
     val coupling = invI1 * angular1 + invI2 * angular2
-    Matrix22(
-      node1.invMass + node2.invMass + invI1 * angular1 * angular1 + invI2 * angular2 * angular2, coupling,
-      coupling, invI1 + invI2)
+    val k11 = node1.invMass + node2.invMass + invI1 * angular1 * angular1 + invI2 * angular2 * angular2
+    val k22 = invI1 + invI2
+    val determinant = k11 * k22 - coupling * coupling
+    if determinant == 0 then
+      lineImpulse = 0; turnImpulse = 0
+    else
+      lineImpulse = (k22 * lineRight - coupling * turnRight) / determinant
+      turnImpulse = (k11 * turnRight - coupling * lineRight) / determinant
 
   def correctVelocity(h: Double): Unit =
     prepare()
@@ -93,15 +103,15 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val b2 = node2
     val lineSpeed = normalX * (b2.vx - b1.vx) + normalY * (b2.vy - b1.vy) + angular2 * b2.w - angular1 * b1.w
     val turnSpeed = b2.w - b1.w
-    val lambda = effectiveMassMatrix.solve(Vector2D(-lineSpeed, -turnSpeed))
-    val px = normalX * lambda.x
-    val py = normalY * lambda.x
+    solve(-lineSpeed, -turnSpeed)
+    val px = normalX * lineImpulse
+    val py = normalY * lineImpulse
     b1.vx -= px * b1.invMass
     b1.vy -= py * b1.invMass
-    b1.w -= (angular1 * lambda.x + lambda.y) * b1.invI
+    b1.w -= (angular1 * lineImpulse + turnImpulse) * b1.invI
     b2.vx += px * b2.invMass
     b2.vy += py * b2.invMass
-    b2.w += (angular2 * lambda.x + lambda.y) * b2.invI
+    b2.w += (angular2 * lineImpulse + turnImpulse) * b2.invI
 
   def correctPosition(h: Double): Unit =
     prepare()
@@ -109,10 +119,10 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val b2 = node2
     val lineError = normalX * (point2.x - point1.x) + normalY * (point2.y - point1.y)
     val angleError = b2.angle - b1.angle - referenceAngle
-    val lambda = effectiveMassMatrix.solve(Vector2D(-lineError, -angleError))
-    val px = normalX * lambda.x
-    val py = normalY * lambda.x
-    b1.displace(-px * b1.invMass, -py * b1.invMass, -(angular1 * lambda.x + lambda.y) * b1.invI)
-    b2.displace(px * b2.invMass, py * b2.invMass, (angular2 * lambda.x + lambda.y) * b2.invI)
+    solve(-lineError, -angleError)
+    val px = normalX * lineImpulse
+    val py = normalY * lineImpulse
+    b1.displace(-px * b1.invMass, -py * b1.invMass, -(angular1 * lineImpulse + turnImpulse) * b1.invI)
+    b2.displace(px * b2.invMass, py * b2.invMass, (angular2 * lineImpulse + turnImpulse) * b2.invI)
 
   override def toString: String = s"PrismaticJoint($node1, $node2, axis = $axis)"

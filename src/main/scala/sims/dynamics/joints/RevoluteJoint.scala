@@ -1,7 +1,7 @@
 package sims.dynamics.joints
 
 import sims.dynamics.Body
-import sims.geometry.{Matrix22, Vector2D}
+import sims.geometry.Vector2D
 
 /** Pins two bodies together at one point; they may turn freely about it (a hinge).
   *
@@ -29,8 +29,8 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   checkNodes()
   Vector2D.requireFinite("anchor", anchor)
 
-  private val point1 = BodyPoint(node1, anchor)
-  private val point2 = BodyPoint(node2, anchor)
+  private val point1 = Anchor(node1, anchor)
+  private val point2 = Anchor(node2, anchor)
 
   /** Current world position of the pin on node1. */
   def connection1: Vector2D = point1.position
@@ -41,19 +41,37 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   /** How far apart the pin's points on the two bodies are now (0 when the joint holds), m. */
   def separation: Double = (connection2 - connection1).length
 
-  /** The change of the pin points' relative velocity per unit impulse, when the impulse acts
-    * at arms (b1x, b1y), (b2x, b2y) and the pin points are at arms (a1x, a1y), (a2x, a2y):
+  // The last 2x2 system set up by `effectiveMassMatrix` (row by row) and the solution of the
+  // last `solve`: fields rather than objects, so the iterations allocate nothing.
+  private var k11, k12, k21, k22 = 0.0
+  private var solutionX, solutionY = 0.0
+
+  /** Sets (k11 k12; k21 k22) to the change of the pin points' relative velocity per unit
+    * impulse, when the impulse acts at arms (b1x, b1y), (b2x, b2y) and the pin points are at
+    * arms (a1x, a1y), (a2x, a2y):
     * (1/m1 + 1/m2) E + sum over both bodies of 1/I [a.y b.y, -a.y b.x; -a.x b.y, a.x b.x].
-    * With a = b this is the symmetric K of the derivation.
+    * With a = b this is the symmetric K of the derivation. Returns its determinant.
     */
   private def effectiveMassMatrix(a1x: Double, a1y: Double, b1x: Double, b1y: Double,
-      a2x: Double, a2y: Double, b2x: Double, b2y: Double): Matrix22 =
+      a2x: Double, a2y: Double, b2x: Double, b2y: Double): Double =
     val invMass = node1.invMass + node2.invMass
     val invI1 = node1.invI
     val invI2 = node2.invI
-    Matrix22(
-      invMass + invI1 * a1y * b1y + invI2 * a2y * b2y, -invI1 * a1y * b1x - invI2 * a2y * b2x,
-      -invI1 * a1x * b1y - invI2 * a2x * b2y, invMass + invI1 * a1x * b1x + invI2 * a2x * b2x)
+    k11 = invMass + invI1 * a1y * b1y + invI2 * a2y * b2y
+    k12 = -invI1 * a1y * b1x - invI2 * a2y * b2x
+    k21 = -invI1 * a1x * b1y - invI2 * a2x * b2y
+    k22 = invMass + invI1 * a1x * b1x + invI2 * a2x * b2x
+    k11 * k22 - k12 * k21
+
+  /** Solves K P = (bx, by) for the matrix last set up, with its determinant; P = 0 when K is
+    * singular (both bodies fixed).
+    */
+  private def solve(determinant: Double, bx: Double, by: Double): Unit =
+    if determinant == 0 then
+      solutionX = 0; solutionY = 0
+    else
+      solutionX = (k22 * bx - k12 * by) / determinant
+      solutionY = (k11 * by - k21 * bx) / determinant
 
   def correctVelocity(h: Double): Unit =
     point1.update()
@@ -75,17 +93,20 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     val m1y = middleY - b1.y
     val m2x = middleX - b2.x
     val m2y = middleY - b2.y
-    val mixed = effectiveMassMatrix(point1.armX, point1.armY, m1x, m1y, point2.armX, point2.armY, m2x, m2y)
     val textbook = effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
       point2.armX, point2.armY, point2.armX, point2.armY)
-    if !(mixed.determinant >= 0.5 * textbook.determinant) then
-      val impulse = textbook.solve(Vector2D(-cdotX, -cdotY))
-      b1.impulseAt(-impulse.x, -impulse.y, point1.armX, point1.armY)
-      b2.impulseAt(impulse.x, impulse.y, point2.armX, point2.armY)
+    val mixed = effectiveMassMatrix(point1.armX, point1.armY, m1x, m1y, point2.armX, point2.armY, m2x, m2y)
+    if !(mixed >= 0.5 * textbook) then
+      // The matrix fields hold the mixed matrix now: set up the textbook one again.
+      effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
+        point2.armX, point2.armY, point2.armX, point2.armY)
+      solve(textbook, -cdotX, -cdotY)
+      b1.impulseAt(-solutionX, -solutionY, point1.armX, point1.armY)
+      b2.impulseAt(solutionX, solutionY, point2.armX, point2.armY)
     else
-      val impulse = mixed.solve(Vector2D(-cdotX, -cdotY))
-      b1.impulseAt(-impulse.x, -impulse.y, m1x, m1y)
-      b2.impulseAt(impulse.x, impulse.y, m2x, m2y)
+      solve(mixed, -cdotX, -cdotY)
+      b1.impulseAt(-solutionX, -solutionY, m1x, m1y)
+      b2.impulseAt(solutionX, solutionY, m2x, m2y)
 
   def correctPosition(h: Double): Unit =
     point1.update()
@@ -94,13 +115,13 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     val b2 = node2
     val cX = point2.x - point1.x
     val cY = point2.y - point1.y
-    val p = effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
-      point2.armX, point2.armY, point2.armX, point2.armY).solve(Vector2D(-cX, -cY))
+    val determinant = effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
+      point2.armX, point2.armY, point2.armX, point2.armY)
+    solve(determinant, -cX, -cY)
     // r x P for each body, with the arms taken before either body moves.
-    val turn1 = point1.armX * p.y - point1.armY * p.x
-    val turn2 = point2.armX * p.y - point2.armY * p.x
-    b1.displace(-p.x * b1.invMass, -p.y * b1.invMass, -turn1 * b1.invI)
-    b2.displace(p.x * b2.invMass, p.y * b2.invMass, turn2 * b2.invI)
+    val turn1 = point1.armX * solutionY - point1.armY * solutionX
+    val turn2 = point2.armX * solutionY - point2.armY * solutionX
+    b1.displace(-solutionX * b1.invMass, -solutionY * b1.invMass, -turn1 * b1.invI)
+    b2.displace(solutionX * b2.invMass, solutionY * b2.invMass, turn2 * b2.invI)
 
   override def toString: String = s"RevoluteJoint($node1, $node2, anchor = $anchor)"
-

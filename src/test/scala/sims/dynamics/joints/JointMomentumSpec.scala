@@ -9,7 +9,7 @@ import sims.geometry.Vector2D
 
 /** Joints exchange equal and opposite impulses, so a free pair keeps its momentum. */
 class JointMomentumSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
-  // Shrinking towards 0 would reach speeds below World.SpeedThreshold, which phase 5 sets to
+  // Shrinking towards 0 would reach speeds below sims.Defaults.RestingSpeed, which phase 5 sets to
   // exactly 0 (that breaks conservation on purpose); report the case as generated instead.
   private given Shrink[Double] = Shrink.shrinkAny
 
@@ -39,7 +39,7 @@ class JointMomentumSpec extends AnyFunSuite with Matchers with ScalaCheckPropert
     world += b2
     world += joint(b1, b2)
     // A common drift faster than the bodies' relative motion keeps every speed far above
-    // World.SpeedThreshold, below which phase 5 would zero it and change the momentum.
+    // sims.Defaults.RestingSpeed, below which phase 5 would zero it and change the momentum.
     val drift = Vector2D(8, 6)
     b1.linearVelocity = drift + throwVelocity
     b1.angularVelocity = spin1

@@ -12,7 +12,7 @@ object PylonScene extends Scene:
 
   def build(): Staged =
     val world = Scene.worldOf(Scene.ground(14))
-    val pylon = Pylon(Vector2D(-0.5, Pylon.DefaultNodeRadius), levels = 8)
+    val pylon = Pylon(Vector2D(-0.5, sims.Defaults.PylonNodeRadius), levels = 8)
     pylon.addTo(world)
     val ball = Scene.ball(Vector2D(-6, 8), 0.4, density = 5)
     ball.linearVelocity = Vector2D(6, 2)

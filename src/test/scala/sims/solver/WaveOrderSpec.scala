@@ -1,4 +1,4 @@
-package sims.collision
+package sims.solver
 
 import org.scalacheck.Gen
 import org.scalatest.funsuite.AnyFunSuite

@@ -1,4 +1,4 @@
-package sims.collision
+package sims.solver
 
 /** An order for a list of corrections between two bodies each, with the same results as the
   * list's own order and more speed.

@@ -1,7 +1,8 @@
-package sims.collision
+package sims.collision.narrowphase
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
+import sims.collision.GridDetector
 import sims.dynamics.{Circle, Rectangle, Shape, World}
 import sims.geometry.Vector2D
 
@@ -9,21 +10,21 @@ import sims.geometry.Vector2D
   * to the next polygon contact, in whatever pair slot that one is, instead of each slot making
   * its own.
   */
-class NarrowphaseCacheSpec extends AnyFunSuite with Matchers:
+class CollisionReuseSpec extends AnyFunSuite with Matchers:
 
   private def ball(x: Double, y: Double): Circle =
     val c = Circle(0.5, 1); c.pos = Vector2D(x, y); c.asBody; c
 
-  private def slotFor(cache: NarrowphaseCache, a: Shape, b: Shape): PairSlot =
+  private def slotFor(cache: Narrowphase, a: Shape, b: Shape): PairSlot =
     val slot = PairSlot()
     slot.first = a
     slot.second = b
     slot.methods = cache.resolve(a, b)
     slot
 
-  private def readyCache(): NarrowphaseCache =
+  private def readyCache(): Narrowphase =
     val detector = GridDetector(World())
-    val cache = NarrowphaseCache()
+    val cache = Narrowphase()
     cache.update(detector.detectionMethods, detector.collisionMethods)
     cache
 
@@ -55,7 +56,7 @@ class NarrowphaseCacheSpec extends AnyFunSuite with Matchers:
     val slot = slotFor(cache, floor, a)
     val made = cache.collide(slot)
     made should not be null
-    cache.releaseUnused(slot, NarrowphaseCache.CircleCircle) // the slot now holds two circles
+    cache.releaseUnused(slot, PairKind.CircleCircle) // the slot now holds two circles
     slot.polyCircle shouldBe null
     val other = slotFor(cache, floor, ball(3, 0.9))
     cache.collide(other) should be theSameInstanceAs made

@@ -1,20 +1,27 @@
-package sims.collision
+package sims.collision.narrowphase
 
 import scala.collection.mutable.ArrayBuffer
+import sims.collision.{CircleCollision, Collision, PolyCircleCollision, PolyCollision}
 import sims.dynamics.{Circle, Shape}
 import sims.geometry.ConvexPolygon
 
-/** Resolves the detector's partial-function lists once per pair of shape classes. The cache is
-  * dropped whenever the lists change, so methods appended later are seen. When both chosen
-  * methods are the same built-in kind, the narrowphase calls it directly and refills the
-  * pair slot's reusable collision object instead of going through the partial functions.
+/** The second stage of collision detection: for each candidate pair, whether its shapes collide
+  * and their [[Collision]] (SPEC section 4).
+  *
+  * The detector's `detectionMethods` and `collisionMethods` lists are the extension point. They
+  * fill this table: a map from a pair of shape classes to the first test and the first
+  * constructor defined for it, resolved once per class pair (so a method must be defined or not
+  * by the shapes' classes alone, as type patterns are) and dropped whenever a list changes.
+  * When both chosen methods are the same built-in [[PairKind]], the narrowphase calls its
+  * function directly and refills the pair slot's reusable collision object instead of going
+  * through the partial functions, and reuses the slot's last result while neither body moved.
   */
-private[collision] final class NarrowphaseCache:
-  import NarrowphaseCache.*
+private[sims] final class Narrowphase:
+  import Narrowphase.*
 
   private var detectionSnapshot = Array.empty[AnyRef]
   private var collisionSnapshot = Array.empty[AnyRef]
-  private val resolved = java.util.HashMap[(Class[?], Class[?]), Resolved]()
+  private val table = java.util.HashMap[(Class[?], Class[?]), Resolved]()
   // A few recent class pairs, searched by identity before the map: scenes have a handful of
   // class pairs, looked up for every candidate pair, and the map's key would be a new tuple.
   private val recentClass1 = new Array[Class[?]](RecentSize)
@@ -22,13 +29,13 @@ private[collision] final class NarrowphaseCache:
   private val recent = new Array[Resolved](RecentSize)
   private var recentNext = 0
 
-  /** Drops the cache if either list changed since the last call; true if it did. */
+  /** Drops the table if either list changed since the last call; true if it did. */
   def update(detection: ArrayBuffer[PartialFunction[(Shape, Shape), Boolean]],
       collision: ArrayBuffer[PartialFunction[(Shape, Shape), Collision]]): Boolean =
     if !sameContents(detection, detectionSnapshot) || !sameContents(collision, collisionSnapshot) then
       detectionSnapshot = detection.toArray[AnyRef]
       collisionSnapshot = collision.toArray[AnyRef]
-      resolved.clear()
+      table.clear()
       java.util.Arrays.fill(recentClass1.asInstanceOf[Array[AnyRef]], null)
       java.util.Arrays.fill(recentClass2.asInstanceOf[Array[AnyRef]], null)
       java.util.Arrays.fill(recent.asInstanceOf[Array[AnyRef]], null)
@@ -43,64 +50,47 @@ private[collision] final class NarrowphaseCache:
       i == snapshot.length
 
   /** The collision of the pair in `slot` from the current positions, or null if its shapes do
-    * not collide. Built-in kinds refill the slot's own collision object, and reuse the last
-    * result when neither body has moved since it was computed (same inputs, same result).
+    * not collide.
     */
   def collide(slot: PairSlot): Collision =
     val a = slot.first
     val b = slot.second
     val r = slot.methods
-    if r.kind == General then collideGeneral(r, a, b)
+    val kind = r.kind
+    if kind == null then collideGeneral(r, a, b)
     else
-      val moves1 = a.body.moves
-      val moves2 = b.body.moves
-      if (slot.doneFirst eq a) && (slot.doneSecond eq b) && slot.doneMoves1 == moves1 && slot.doneMoves2 == moves2 then
+      val placements1 = a.body.placements
+      val placements2 = b.body.placements
+      if (slot.doneFirst eq a) && (slot.doneSecond eq b) && slot.donePlacements1 == placements1 &&
+          slot.donePlacements2 == placements2 then
         slot.result
       else
-        val c = r.kind match
-          case CircleCircle =>
-            val c1 = a.asInstanceOf[Circle]
-            val c2 = b.asInstanceOf[Circle]
-            val b1 = a.body
-            val b2 = b.body
-            if slot.result == null && (slot.doneFirst eq a) && (slot.doneSecond eq b) &&
-                slot.doneJumps1 == b1.jumps && slot.doneJumps2 == b2.jumps &&
-                (b1.travel - slot.doneTravel1) + (b2.travel - slot.doneTravel2) < slot.gap then
-              // Still apart for sure: keep the last result and the reference point of the bound.
-              return null
-            val distance = CircleCollision.centreDistance(c1, c2)
-            val separation = distance - (c1.radius + c2.radius)
-            if !(separation <= 0) then
-              // Apart: the gap and the travels it is measured from (read only while apart).
-              slot.gap =
-                if b1.centred && b2.centred then
-                  separation - GapMargin * (1 + math.abs(c1.x) + math.abs(c1.y) + math.abs(c2.x) + math.abs(c2.y) + distance)
-                else 0
-              slot.doneTravel1 = b1.travel
-              slot.doneTravel2 = b2.travel
-              slot.doneJumps1 = b1.jumps
-              slot.doneJumps2 = b2.jumps
-              null
-            else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
-            else { slot.circle.compute(c1, c2, distance); slot.circle }
-          case PolygonPolygon =>
-            val p1 = a.asInstanceOf[Polygon]
-            val p2 = b.asInstanceOf[Polygon]
-            val axis = PolyCollision.referenceAxisIfColliding(p1, p2)
-            if axis < 0 then { givePoly(slot); null }
-            else
-              if slot.poly == null then slot.poly = take(sparePolys)
-              if slot.poly == null then slot.poly = PolyCollision(p1, p2)
-              else slot.poly.compute(p1, p2, axis)
-              slot.poly
-          case PolygonCircle => polygonCircle(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Circle])
-          case _ => polygonCircle(slot, b.asInstanceOf[Polygon], a.asInstanceOf[Circle])
+        val c = kind match
+          case PairKind.CircleCircle => circleCircle(slot, a.asInstanceOf[Circle], b.asInstanceOf[Circle])
+          case PairKind.PolygonPolygon => polygonPolygon(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Polygon])
+          case PairKind.PolygonCircle => polygonCircle(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Circle])
+          case PairKind.CirclePolygon => polygonCircle(slot, b.asInstanceOf[Polygon], a.asInstanceOf[Circle])
         slot.doneFirst = a
         slot.doneSecond = b
-        slot.doneMoves1 = moves1
-        slot.doneMoves2 = moves2
+        slot.donePlacements1 = placements1
+        slot.donePlacements2 = placements2
         slot.result = c
         c
+
+  private def circleCircle(slot: PairSlot, c1: Circle, c2: Circle): Collision =
+    val distance = CircleCollision.centreDistance(c1, c2)
+    if !(distance - (c1.radius + c2.radius) <= 0) then null
+    else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
+    else { slot.circle.compute(c1, c2, distance); slot.circle }
+
+  private def polygonPolygon(slot: PairSlot, p1: Polygon, p2: Polygon): Collision =
+    val axis = PolyCollision.referenceAxisIfColliding(p1, p2)
+    if axis < 0 then { givePoly(slot); null }
+    else
+      if slot.poly == null then slot.poly = take(sparePolys)
+      if slot.poly == null then slot.poly = PolyCollision(p1, p2)
+      else slot.poly.compute(p1, p2, axis)
+      slot.poly
 
   private def polygonCircle(slot: PairSlot, p: Polygon, c: Circle): Collision =
     if !PolyCircleCollision.colliding(p, c) then { givePolyCircle(slot); null }
@@ -119,12 +109,12 @@ private[collision] final class NarrowphaseCache:
   private val sparePolyCircles = ArrayBuffer.empty[PolyCircleCollision]
   private val sparePolys = ArrayBuffer.empty[PolyCollision]
 
-  /** Gives back the slot's polygon-kind objects that its pair, of the given kind (-1: the slot
-    * holds no pair this step), does not use.
+  /** Gives back the slot's polygon-kind objects that its pair, of the given kind (null: a user
+    * kind, or the slot holds no pair this step), does not use.
     */
-  def releaseUnused(slot: PairSlot, kind: Int): Unit =
-    if kind != PolygonCircle && kind != CirclePolygon then givePolyCircle(slot)
-    if kind != PolygonPolygon then givePoly(slot)
+  def releaseUnused(slot: PairSlot, kind: PairKind): Unit =
+    if kind != PairKind.PolygonCircle && kind != PairKind.CirclePolygon then givePolyCircle(slot)
+    if kind != PairKind.PolygonPolygon then givePoly(slot)
 
   private def givePolyCircle(slot: PairSlot): Unit =
     if slot.polyCircle != null then
@@ -144,15 +134,12 @@ private[collision] final class NarrowphaseCache:
 
   /** Drops the slot's last result if it is the object being given away. */
   private def forget(slot: PairSlot, c: Collision): Unit =
-    if slot.result eq c then
-      slot.result = null
-      slot.doneFirst = null
-      slot.doneSecond = null
+    if slot.result eq c then slot.invalidate()
 
   /** A pair whose methods are not one built-in kind: through the partial functions. */
   private def collideGeneral(r: Resolved, a: Shape, b: Shape): Collision =
     val colliding = r.test match
-      case t: GridDetector.BuiltIn.Test => t.direct(a, b)
+      case t: BuiltInMethods.Test => t.direct(a, b)
       case t => t((a, b))
     if !colliding then null
     else if r.make == null then
@@ -160,7 +147,7 @@ private[collision] final class NarrowphaseCache:
         s"${a.getClass.getSimpleName} and ${b.getClass.getSimpleName}")
     else
       r.make match
-        case m: GridDetector.BuiltIn.Make => m.direct(a, b)
+        case m: BuiltInMethods.Make => m.direct(a, b)
         case m => m((a, b))
 
   /** The methods for the shapes' classes; fails if no detection method covers them. */
@@ -172,7 +159,7 @@ private[collision] final class NarrowphaseCache:
     if k < RecentSize then recent(k)
     else
       val key = (c1, c2)
-      var r = resolved.get(key)
+      var r = table.get(key)
       if r == null then
         val pair = (a, b)
         val test = detectionSnapshot.iterator
@@ -183,32 +170,23 @@ private[collision] final class NarrowphaseCache:
           throw IllegalStateException(s"no detection method for a pair of " +
             s"${c1.getSimpleName} and ${c2.getSimpleName}; append one to detectionMethods")
         r = Resolved(test.get, make.orNull)
-        resolved.put(key, r)
+        table.put(key, r)
       recentClass1(recentNext) = c1
       recentClass2(recentNext) = c2
       recent(recentNext) = r
       recentNext = (recentNext + 1) % RecentSize
       r
 
-private[collision] object NarrowphaseCache:
+private[sims] object Narrowphase:
   private type Polygon = Shape & ConvexPolygon
   private val RecentSize = 8
-  /** Rounding margin of a circle pair's gap, per unit of coordinate magnitude: far more than
-    * the error of the distance and of the travel differences.
+
+  /** The test and the constructor chosen for one pair of classes (the constructor may be
+    * missing: then a colliding pair is an error).
     */
-  private val GapMargin = 1e-12
-
-  /** Kinds of resolved methods: general (through the partial functions) or one built-in kind. */
-  val General = 0
-  val CircleCircle = 1
-  val PolygonPolygon = 2
-  val PolygonCircle = 3
-  val CirclePolygon = 4
-
-  /** The test and the constructor chosen for one pair of classes (either may be missing). */
   final class Resolved(val test: PartialFunction[(Shape, Shape), Boolean],
       val make: PartialFunction[(Shape, Shape), Collision]):
-    /** The built-in kind when test and constructor are the same built-in kind, else General. */
-    val kind: Int = (test, make) match
-      case (t: GridDetector.BuiltIn.Test, m: GridDetector.BuiltIn.Make) if t.kind == m.kind => t.kind
-      case _ => General
+    /** The built-in kind when test and constructor are the same built-in kind, else null. */
+    val kind: PairKind = (test, make) match
+      case (t: BuiltInMethods.Test, m: BuiltInMethods.Make) if t.kind == m.kind => t.kind
+      case _ => null

@@ -1,11 +1,11 @@
-package sims.collision
+package sims.collision.broadphase
 
 /** The broadphase's sparse grid: an open-addressing hash table from cell (cx, cy) to a chain of
   * entries (shape indices), rebuilt every step without allocating once it has grown. Lookups
   * depend only on the cell coordinates, never on object identity, so pair order is
   * deterministic.
   */
-private[collision] final class CellGrid:
+private[broadphase] final class CellGrid:
   private var keys = new Array[Long](1024)
   private var stamps = new Array[Int](1024) // slot in use when stamps(slot) == stamp
   private var heads = new Array[Int](1024)

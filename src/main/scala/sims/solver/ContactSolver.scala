@@ -1,8 +1,10 @@
-package sims.collision
+package sims.solver
 
+import sims.collision.Collision
 import sims.dynamics.Body
 
-/** The velocity iterations of phase 4 over one step's contact points, kept in flat arrays.
+/** The classic step's contact solver: the velocity iterations of phase 4 over one step's
+  * contact points, kept in flat arrays.
   *
   * Positions do not change during phase 4, so everything a point's correction needs apart from
   * the velocities (the bodies, the arms r1 and r2, the effective masses along n and t, n, 1 + e
@@ -93,8 +95,8 @@ private[sims] final class ContactSolver:
     val b2 = c.shape2.body
     val nx = c.normalX
     val ny = c.normalY
-    val key1 = if b1.fixed then -1 else c.shape1.bodyKey
-    val key2 = if b2.fixed then -1 else c.shape2.bodyKey
+    val key1 = if b1.fixed then -1 else b1.index
+    val key2 = if b2.fixed then -1 else b2.index
     if !orderable(b1, key1) || !orderable(b2, key2) then unorderable = true
     val restitutionFactor = 1 + c.shape1.restitution * c.shape2.restitution
     val mu = c.shape1.friction * c.shape2.friction

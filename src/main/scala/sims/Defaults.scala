@@ -1,0 +1,80 @@
+package sims
+
+import sims.geometry.Vector2D
+
+/** Every default of the library, in one place: what a new world, shape, detector, joint, prefab
+  * or solver starts with, and the fixed tolerances of the SPEC. Each is a named constant; the
+  * classes take them from here (docs/architecture.md lists them).
+  */
+object Defaults:
+  // ---- World (SPEC section 1)
+
+  /** Duration of one time step, s. */
+  val TimeStep: Double = 1.0 / 60
+
+  /** Velocity and position correction iterations of the classic step. */
+  val Iterations: Int = 10
+
+  /** Acceleration of gravity, m/s^2. */
+  val Gravity: Vector2D = Vector2D(0, -9.81)
+
+  /** Linear (m/s) and angular (rad/s) speeds below this become exactly 0 in the classic step's
+    * phase 5 (SPEC section 2).
+    */
+  val RestingSpeed: Double = 0.0001
+
+  // ---- Shapes
+
+  /** Coefficient of restitution of a new shape (a pair uses the product of its two shapes'). */
+  val Restitution: Double = 0.7
+
+  /** Coefficient of friction of a new shape (a pair uses the product of its two shapes'). */
+  val Friction: Double = 0.707
+
+  // ---- Collision
+
+  /** Side of a grid cell of the broadphase, m. */
+  val GridSide: Double = 2
+
+  /** Shapes covering more grid cells than this bypass the grid and meet every shape directly. */
+  val LargeShapeCells: Long = 64
+
+  /** Overlap the classic contact's position correction tolerates, m (SPEC section 4). */
+  val ToleratedOverlap: Double = 0.01
+
+  // ---- Mouse joint
+
+  /** Natural frequency of a new mouse joint's spring, Hz. */
+  val MouseFrequency: Double = 5.0
+
+  /** Damping ratio of a new mouse joint's spring (1 is critical). */
+  val MouseDampingRatio: Double = 0.7
+
+  /** Damping of a dragged body's rotation, 1/s. */
+  val MouseAngularDamping: Double = 1.0
+
+  // ---- Prefabs
+
+  /** Distance between neighbouring nodes of a net, m. */
+  val NetSpacing: Double = 0.3
+
+  /** Radius of a net's nodes, m. */
+  val NetNodeRadius: Double = 0.05
+
+  /** Density of a net's nodes, kg/m^2. */
+  val NetDensity: Double = 10
+
+  /** Panels of a pylon. */
+  val PylonLevels: Int = 10
+
+  /** Distance between a pylon's two columns, m. */
+  val PylonWidth: Double = 1.0
+
+  /** Height of one panel of a pylon, m. */
+  val PylonLevelHeight: Double = 1.0
+
+  /** Radius of a pylon's nodes, m. */
+  val PylonNodeRadius: Double = 0.15
+
+  /** Density of a pylon's nodes, kg/m^2. */
+  val PylonDensity: Double = 10

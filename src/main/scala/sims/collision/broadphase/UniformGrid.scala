@@ -1,0 +1,276 @@
+package sims.collision.broadphase
+
+import scala.collection.mutable.ArrayBuffer
+import sims.Defaults
+import sims.collision.{PairBuffer, PairFilter}
+import sims.dynamics.Shape
+
+/** The SPEC's grid broadphase (section 4): square cells of side `gridSide`; two shapes are a
+  * candidate pair when they share a cell, their bounds overlap and [[PairFilter]] accepts them.
+  * Each unordered pair is reported once: for each shape in world order, its partners among the
+  * earlier shapes, cell by cell of the shape's cells (x, then y), and within a cell the most
+  * recently added partner first (a pair is reported in the cell that holds the lower-left
+  * corner of the two bounds' overlap).
+  *
+  * How it is computed: with the default 2 m cells a ball pit puts about 80 balls in a cell, so
+  * partners are found in an internal finer grid (cells 1.5 times the shapes' mean extent),
+  * then sorted into the coarse grid's order: the same pairs in the same order, faster. Shapes
+  * covering more than 64 fine cells ("wide") are tested against every other grid shape, and
+  * shapes covering more than [[Defaults.LargeShapeCells]] coarse cells ("large", a huge
+  * ground) against every shape, so one big shape does not fill thousands of cells.
+  */
+private[sims] final class UniformGrid extends Broadphase:
+  import UniformGrid.*
+
+  private var _gridSide = Defaults.GridSide
+
+  /** Side of a cell, m. */
+  def gridSide: Double = _gridSide
+
+  /** Sets the cell side; must be positive and finite. */
+  def gridSide_=(side: Double): Unit = _gridSide = Shape.requirePositive("gridSide", side)
+
+  private var shapes = Array.empty[Shape]
+  private var count = 0
+  // Per shape, from the last update: its enlarged bounds, its placement, the coarse and fine
+  // cells of its bounds' lower-left corner and the fine cells of its upper-right one. Cell
+  // functions are monotonic, so the cell of the corner of two bounds' overlap, cell(max(a, b)),
+  // is max(cell(a), cell(b)): computed once per shape instead of once per candidate.
+  private var boxMinX, boxMinY, boxMaxX, boxMaxY = new Array[Double](0)
+  private var placement = new Array[Byte](0)
+  private var coarseX0, coarseY0, fineX0, fineY0, fineX1, fineY1 = new Array[Int](0)
+  private val wide = ArrayBuffer.empty[Int]
+  private val large = ArrayBuffer.empty[Int]
+  private val grid = CellGrid()
+  private var perFine = 1.0 // 1 / the fine cell side
+  private var gridBuilt = false
+  // Partners of the shape being placed: their order keys, and its coarse cells.
+  private var groupKeys = new Array[Long](16)
+  private var groupSize = 0
+  private var groupX0, groupY0 = 0
+  private var groupRows = 0L
+  // Query bookkeeping: the last query that found each shape.
+  private var foundStamp = new Array[Int](0)
+  private var queryStamp = 0
+  private val foundIndices = ArrayBuffer.empty[Int]
+
+  def update(shapes: Array[Shape], margin: Double): Unit =
+    this.shapes = shapes
+    count = shapes.length
+    ensureCapacity(count)
+    val side = _gridSide
+    large.clear()
+    wide.clear()
+    // Bounds, the large shapes, and the mean extent of the others for the fine grid's cells.
+    var extentSum = 0.0
+    var counted = 0
+    var i = 0
+    while i < count do
+      val s = shapes(i)
+      if !s.collidable then placement(i) = Ignored
+      else
+        val x0 = s.minX - margin; val y0 = s.minY - margin
+        val x1 = s.maxX + margin; val y1 = s.maxY + margin
+        boxMinX(i) = x0; boxMinY(i) = y0; boxMaxX(i) = x1; boxMaxY(i) = y1
+        coarseX0(i) = cell(x0, side)
+        coarseY0(i) = cell(y0, side)
+        val cells = (cell(x1, side).toLong - coarseX0(i) + 1) * (cell(y1, side).toLong - coarseY0(i) + 1)
+        if cells > Defaults.LargeShapeCells then
+          placement(i) = Large
+          large += i
+        else
+          placement(i) = Fine
+          extentSum += math.max(x1 - x0, y1 - y0)
+          counted += 1
+      i += 1
+    val fine =
+      val mean = if counted == 0 then side else extentSum / counted * FineCellPerExtent
+      if mean > 0 && mean <= side then mean else side
+    // Fine cells by multiplication: any consistent cell function serves the internal grid.
+    perFine = 1 / fine
+    i = 0
+    while i < count do
+      if placement(i) == Fine then
+        fineX0(i) = fineCell(boxMinX(i), perFine); fineX1(i) = fineCell(boxMaxX(i), perFine)
+        fineY0(i) = fineCell(boxMinY(i), perFine); fineY1(i) = fineCell(boxMaxY(i), perFine)
+        if (fineX1(i).toLong - fineX0(i) + 1) * (fineY1(i).toLong - fineY0(i) + 1) > FineShapeCells then
+          placement(i) = Wide
+          wide += i
+      i += 1
+    gridBuilt = false
+
+  def findPairs(pairs: PairBuffer): Unit =
+    grid.reset(count)
+    val side = _gridSide
+    var i = 0
+    while i < count do
+      val p = placement(i)
+      if p == Fine || p == Wide then
+        groupSize = 0
+        groupX0 = coarseX0(i)
+        groupY0 = coarseY0(i)
+        groupRows = cell(boxMaxY(i), side).toLong - groupY0 + 1
+        if p == Wide then
+          // Too big for the fine grid: tested against every earlier grid shape instead.
+          var j = 0
+          while j < i do
+            val q = placement(j)
+            if (q == Fine || q == Wide) && candidates(j, i) then addToGroup(j, i)
+            j += 1
+        else
+          // Long counters: a cell index at Int.MaxValue must not wrap around.
+          val x0 = fineX0(i); val y0 = fineY0(i)
+          var cxLong = x0.toLong
+          while cxLong <= fineX1(i) do
+            val cx = cxLong.toInt
+            var cyLong = y0.toLong
+            while cyLong <= fineY1(i) do
+              val cy = cyLong.toInt
+              var entry = grid.firstEntry(cx, cy)
+              while entry >= 0 do
+                val j = grid.shapeOf(entry)
+                // Each pair once: in the fine cell holding the corner of the bounds' overlap.
+                if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy && candidates(j, i) then
+                  addToGroup(j, i)
+                entry = grid.nextEntry(entry)
+              grid.insert(cx, cy, i)
+              cyLong += 1
+            cxLong += 1
+          var k = 0
+          while k < wide.length && wide(k) < i do
+            val j = wide(k)
+            if candidates(j, i) then addToGroup(j, i)
+            k += 1
+        var g = 0
+        while g < groupSize do
+          pairs.add(shapes(groupShape(groupKeys(g))), shapes(i))
+          g += 1
+      i += 1
+    gridBuilt = true
+    // Large shapes meet every collidable shape directly.
+    var k = 0
+    while k < large.length do
+      val big = large(k)
+      var j = 0
+      while j < count do
+        val earlierLarge = j < big && placement(j) == Large
+        if j != big && placement(j) != Ignored && !earlierLarge && candidates(j, big) then
+          if j < big then pairs.add(shapes(j), shapes(big)) else pairs.add(shapes(big), shapes(j))
+        j += 1
+      k += 1
+
+  def query(minX: Double, minY: Double, maxX: Double, maxY: Double, found: ArrayBuffer[Shape]): Unit =
+    if !gridBuilt then buildGrid()
+    queryStamp += 1
+    foundIndices.clear()
+    val x0 = fineCell(minX, perFine); val x1 = fineCell(maxX, perFine)
+    val y0 = fineCell(minY, perFine); val y1 = fineCell(maxY, perFine)
+    if (x1.toLong - x0 + 1) * (y1.toLong - y0 + 1) > QueryCellLimit then
+      // A box over many cells: every shape's bounds are checked, which is cheaper.
+      var i = 0
+      while i < count do
+        if placement(i) != Ignored then consider(i, minX, minY, maxX, maxY)
+        i += 1
+    else
+      var cxLong = x0.toLong
+      while cxLong <= x1 do
+        var cyLong = y0.toLong
+        while cyLong <= y1 do
+          var entry = grid.firstEntry(cxLong.toInt, cyLong.toInt)
+          while entry >= 0 do
+            consider(grid.shapeOf(entry), minX, minY, maxX, maxY)
+            entry = grid.nextEntry(entry)
+          cyLong += 1
+        cxLong += 1
+      var k = 0
+      while k < wide.length do { consider(wide(k), minX, minY, maxX, maxY); k += 1 }
+      k = 0
+      while k < large.length do { consider(large(k), minX, minY, maxX, maxY); k += 1 }
+    foundIndices.sortInPlace()
+    var k = 0
+    while k < foundIndices.length do
+      found += shapes(foundIndices(k))
+      k += 1
+
+  /** Adds shape i to the query's result once, if its bounds overlap the box. */
+  private def consider(i: Int, minX: Double, minY: Double, maxX: Double, maxY: Double): Unit =
+    if foundStamp(i) != queryStamp &&
+        sims.geometry.AABB.overlaps(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), minX, minY, maxX, maxY) then
+      foundStamp(i) = queryStamp
+      foundIndices += i
+
+  /** Puts every fine shape into the fine grid (for a query without a `findPairs` since the
+    * last update).
+    */
+  private def buildGrid(): Unit =
+    grid.reset(count)
+    var i = 0
+    while i < count do
+      if placement(i) == Fine then
+        var cxLong = fineX0(i).toLong
+        while cxLong <= fineX1(i) do
+          var cyLong = fineY0(i).toLong
+          while cyLong <= fineY1(i) do
+            grid.insert(cxLong.toInt, cyLong.toInt, i)
+            cyLong += 1
+          cxLong += 1
+      i += 1
+    gridBuilt = true
+
+  /** Shapes j and i may collide: their bounds of this step overlap and the filter accepts them. */
+  private def candidates(j: Int, i: Int): Boolean =
+    sims.geometry.AABB.overlaps(boxMinX(j), boxMinY(j), boxMaxX(j), boxMaxY(j),
+      boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && PairFilter.accepts(shapes(j), shapes(i))
+
+  /** Inserts partner j of shape i into the group, in the coarse grid's order: by the rank of
+    * the coarse cell holding the overlap's corner among i's cells, then the later shape first.
+    */
+  private def addToGroup(j: Int, i: Int): Unit =
+    val cx = math.max(coarseX0(j), coarseX0(i))
+    val cy = math.max(coarseY0(j), coarseY0(i))
+    val rank = (cx.toLong - groupX0) * groupRows + (cy.toLong - groupY0)
+    val key = (rank << 32) | (Int.MaxValue - j).toLong
+    if groupSize == groupKeys.length then groupKeys = java.util.Arrays.copyOf(groupKeys, 2 * groupSize)
+    var g = groupSize
+    while g > 0 && groupKeys(g - 1) > key do
+      groupKeys(g) = groupKeys(g - 1)
+      g -= 1
+    groupKeys(g) = key
+    groupSize += 1
+
+  private def ensureCapacity(n: Int): Unit =
+    if boxMinX.length < n then
+      val capacity = math.max(n, 2 * boxMinX.length)
+      boxMinX = new Array[Double](capacity); boxMinY = new Array[Double](capacity)
+      boxMaxX = new Array[Double](capacity); boxMaxY = new Array[Double](capacity)
+      placement = new Array[Byte](capacity)
+      coarseX0 = new Array[Int](capacity); coarseY0 = new Array[Int](capacity)
+      fineX0 = new Array[Int](capacity); fineY0 = new Array[Int](capacity)
+      fineX1 = new Array[Int](capacity); fineY1 = new Array[Int](capacity)
+      foundStamp = new Array[Int](capacity)
+      queryStamp = 0
+
+private[sims] object UniformGrid:
+  /** Side of the internal fine grid's cells per mean extent of the shapes in it. */
+  private val FineCellPerExtent = 1.5
+  /** Shapes covering more fine cells than this are tested against all earlier shapes. */
+  private val FineShapeCells = 64L
+  /** A query box covering more fine cells than this checks every shape's bounds instead. */
+  private val QueryCellLimit = 4096L
+  private val Fine: Byte = 0
+  private val Wide: Byte = 1
+  private val Large: Byte = 2
+  private val Ignored: Byte = 3
+
+  /** The shape index in a group key. */
+  private inline def groupShape(key: Long): Int = Int.MaxValue - (key & 0xffffffffL).toInt
+
+  /** Grid cell index of a coordinate: floor(coordinate / side), clamped to the Int range. */
+  private[sims] def cell(coordinate: Double, side: Double): Int =
+    val c = math.floor(coordinate / side)
+    if c < Int.MinValue then Int.MinValue else if c > Int.MaxValue then Int.MaxValue else c.toInt
+
+  /** Cell of the internal fine grid: floor(coordinate * perSide), clamped to the Int range. */
+  private inline def fineCell(coordinate: Double, perSide: Double): Int =
+    val c = math.floor(coordinate * perSide)
+    if c < Int.MinValue then Int.MinValue else if c > Int.MaxValue then Int.MaxValue else c.toInt

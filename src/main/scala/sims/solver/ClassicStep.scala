@@ -1,0 +1,111 @@
+package sims.solver
+
+import sims.Defaults
+import sims.dynamics.{Checked, World}
+import sims.dynamics.joints.ForceJoint
+
+/** SiMS 1.2's time step, the default solver: the seven phases of SPEC section 2 (documentation
+  * 3.3 and 4.10), in order, each a method below:
+  *
+  *   1. `advanceTime`: time += h
+  *   2. `applyJointForces`: every ForceJoint applies its force
+  *   3. `integrateAccelerations`: gravity, then v += F/m h and w += tau/I h
+  *   4. `correctVelocities`: the detector finds the collisions; `iterations` times every
+  *      joint's, then every collision's `correctVelocity` (collisions through [[ContactSolver]])
+  *   5. `integrateVelocities`: resting speeds become 0; x += v h, rotation += w h; forces cleared
+  *   6. `correctPositions`: `iterations` times every joint's, then every collision's
+  *      `correctPosition`, the narrowphase rerun before each pass
+  *   7. the world's post-step hook (run by the world)
+  *
+  * Results are the SPEC's rules to the bit; how they are computed (flat arrays, wave order) is
+  * free (deviation 6).
+  */
+object ClassicStep extends Solver:
+  def step(world: World): Unit =
+    val h = world.timeStep
+    advanceTime(world, h)                 // phase 1
+    applyJointForces(world)               // phase 2
+    world.guard("joint forces", Checked.Forces)
+    integrateAccelerations(world, h)      // phase 3
+    world.guard("integration of accelerations", Checked.Velocities)
+    correctVelocities(world, h)           // phase 4
+    world.guard("velocity correction", Checked.Velocities)
+    integrateVelocities(world, h)         // phase 5
+    world.guard("integration of velocities", Checked.Positions)
+    if world.enablePositionCorrection then
+      correctPositions(world, h)          // phase 6
+      world.guard("position correction", Checked.Positions)
+
+  override def toString: String = "ClassicStep"
+
+  private def advanceTime(world: World, h: Double): Unit = world.time = world.time + h
+
+  private def applyJointForces(world: World): Unit =
+    val joints = world.jointList
+    var i = 0
+    while i < joints.length do
+      joints(i) match
+        case f: ForceJoint => f.applyForce()
+        case _ => ()
+      i += 1
+
+  private def integrateAccelerations(world: World, h: Double): Unit =
+    val bodies = world.bodyList
+    val gx = world.gravity.x
+    val gy = world.gravity.y
+    var i = 0
+    while i < bodies.length do
+      val b = bodies(i)
+      if !b.fixed then
+        val m = b.mass
+        b.fx += gx * m
+        b.fy += gy * m
+        b.vx += (b.fx / m) * h
+        b.vy += (b.fy / m) * h
+        b.w += (b.tau / b.I) * h
+      i += 1
+
+  private def correctVelocities(world: World, h: Double): Unit =
+    val contacts = world.workspace(classOf[ContactSolver], ContactSolver())
+    if world.enableCollisionDetection then
+      world.detector.detect()
+      contacts.load(world.detector.collisions)
+    else contacts.clear()
+    val joints = world.jointList
+    var iteration = 0
+    while iteration < world.iterations do
+      var i = 0
+      while i < joints.length do
+        joints(i).correctVelocity(h)
+        i += 1
+      contacts.correctVelocities(h)
+      iteration += 1
+
+  private def integrateVelocities(world: World, h: Double): Unit =
+    val bodies = world.bodyList
+    var i = 0
+    while i < bodies.length do
+      val b = bodies(i)
+      if math.sqrt(b.vx * b.vx + b.vy * b.vy) < Defaults.RestingSpeed then
+        b.vx = 0; b.vy = 0
+      if math.abs(b.w) < Defaults.RestingSpeed then b.w = 0
+      b.displace(b.vx * h, b.vy * h, b.w * h)
+      b.fx = 0; b.fy = 0; b.tau = 0
+      i += 1
+
+  private def correctPositions(world: World, h: Double): Unit =
+    val joints = world.jointList
+    var iteration = 0
+    while iteration < world.iterations do
+      var i = 0
+      while i < joints.length do
+        joints(i).correctPosition(h)
+        i += 1
+      if world.enableCollisionDetection then
+        world.detector.refresh()
+        val collisions = world.detector.collisions
+        i = 0
+        while i < collisions.length do
+          collisions(i).correctPosition(h)
+          i += 1
+      iteration += 1
