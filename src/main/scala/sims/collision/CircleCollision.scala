@@ -6,9 +6,6 @@ import sims.geometry.Vector2D
 /** Collision of two circles. Normal: from the centre of `circle1` to that of `circle2`
   * (straight up if the centres coincide); one point: on the outline of `circle1`,
   * at `c1 + n (d - r2)` with d the distance of the centres.
-  *
-  * The detector reuses one object per candidate pair slot and refills it in place
-  * (`compute`), so a collision taken from `World.collisions` describes the latest step only.
   */
 final class CircleCollision(circle1: Circle, circle2: Circle) extends Collision:
   private var first: Circle = circle1

@@ -97,3 +97,40 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     d.gridSide shouldBe 2.0
     intercept[IllegalArgumentException](d.gridSide = 0).getMessage should include("gridSide")
   }
+
+  test("a box query finds exactly the shapes whose bounds overlap the box, in world order") {
+    val box = for
+      x <- Gen.choose(-25.0, 25.0)
+      y <- Gen.choose(-25.0, 25.0)
+      w <- Gen.oneOf(Gen.choose(0.0, 1.0), Gen.choose(1.0, 40.0))
+      h <- Gen.choose(0.0, 10.0)
+    yield sims.geometry.AABB(Vector2D(x, y), Vector2D(x + w, y + h))
+    forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0), Gen.listOfN(5, box), minSuccessful(30)) { (shapes, side, boxes) =>
+      val world = scene(shapes, side)
+      world.shapes.head.collidable = false // left out of queries too
+      val grid = sims.collision.broadphase.UniformGrid()
+      grid.gridSide = side
+      grid.update(world.shapeBuffer, 0)
+      for (query, i) <- boxes.zipWithIndex do
+        if i == 2 then grid.findPairs(PairBuffer()) // queries work with or without pairs found
+        val found = scala.collection.mutable.ArrayBuffer.empty[Shape]
+        grid.query(query.minVertex.x, query.minVertex.y, query.maxVertex.x, query.maxVertex.y, found)
+        found.toSeq shouldBe world.shapes.filter(s => s.collidable && s.AABB.overlaps(query))
+    }
+  }
+
+  test("bounds enlarged by a margin make pairs of shapes that are that close") {
+    val world = World()
+    val a = Circle(1, 1)
+    val b = Circle(1, 1); b.pos = Vector2D(2.05, 0)
+    world += a.asBody
+    world += b.asBody
+    val grid = sims.collision.broadphase.UniformGrid()
+    val pairs = PairBuffer()
+    grid.update(world.shapeBuffer, 0)
+    grid.findPairs(pairs)
+    pairs.size shouldBe 0
+    grid.update(world.shapeBuffer, 0.03)
+    grid.findPairs(pairs)
+    pairs.size shouldBe 1
+  }

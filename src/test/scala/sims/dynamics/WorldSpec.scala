@@ -163,3 +163,23 @@ class WorldSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     message(world.iterations = 0) should include("iterations must be at least 1, got 0")
     message(world.gravity = Vector2D(Double.NaN, 0)) should include("gravity")
   }
+
+  test("a world made with another detector uses it (no grid detector is built)") {
+    final class CountingDetector(val world: World) extends sims.collision.Detector:
+      var detections = 0
+      def collisions = IndexedSeq.empty
+      def detect(): Unit = detections += 1
+    val world = World(CountingDetector(_))
+    world += Circle(1, 1).asBody
+    world.step()
+    world.detector shouldBe a[CountingDetector]
+    // Once for the velocity iterations, then refresh() (by default detect()) in each position iteration.
+    world.detector.asInstanceOf[CountingDetector].detections shouldBe 1 + world.iterations
+    World().detector shouldBe a[sims.collision.GridDetector]
+  }
+
+  test("the solver can be switched, and must not be null") {
+    val world = World()
+    world.solver shouldBe sims.solver.ClassicStep
+    intercept[IllegalArgumentException](world.solver = null).getMessage should include("solver")
+  }
