@@ -42,13 +42,7 @@ class ManifoldSpec extends AnyFunSuite with Matchers:
     manifold.toString shouldBe "Manifold(normal = (0.0, 0.0), points = [])"
   }
 
-  /** True in the coverage run, whose instrumentation records every statement (and allocates). */
-  private def instrumented: Boolean =
-    try { Class.forName("scoverage.Invoker"); true }
-    catch case _: ClassNotFoundException => false
-
   test("colliding allocates nothing per call (measured on library shapes that move between calls)") {
-    assume(!instrumented, "the coverage run's instrumentation allocates per statement")
     val threads = ManagementFactory.getThreadMXBean.asInstanceOf[com.sun.management.ThreadMXBean]
     val manifold = Manifold()
     val floor = box(2, 0.5, 0, 0)
