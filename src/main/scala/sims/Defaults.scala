@@ -78,3 +78,40 @@ object Defaults:
 
   /** Density of a pylon's nodes, kg/m^2. */
   val PylonDensity: Double = 10
+
+  // ---- SoftStep (SOFTSTEP.md section 1)
+
+  /** Substeps per time step. */
+  val Substeps: Int = 4
+
+  /** Stiffness of contacts, Hz (used at most 0.25 / substep). */
+  val ContactHertz: Double = 30
+
+  /** Damping ratio of contacts. */
+  val ContactDampingRatio: Double = 10
+
+  /** Contacts with a fixed body are stiffer by this factor. */
+  val StaticContactFactor: Double = 2
+
+  /** Stiffness of rigid joints, Hz (used at most 0.25 / substep). */
+  val JointHertz: Double = 60
+
+  /** Damping ratio of rigid joints. */
+  val JointDampingRatio: Double = 2
+
+  /** The fastest that overlap is pushed apart, m/s. */
+  val ContactSpeed: Double = 3
+
+  /** Impacts slower than this do not bounce, m/s. */
+  val RestitutionThreshold: Double = 1
+
+  /** Overlap tolerance of the soft narrowphase's choices, m. */
+  val LinearSlop: Double = 0.005
+
+  /** Distance at which contact points are made before shapes touch, m (4 linear slops). */
+  val SpeculativeDistance: Double = 0.02
+
+  /** A contact's manifold is kept while its bodies moved less than this relative to each other,
+    * m (10 linear slops).
+    */
+  val ContactPersistence: Double = 0.05

@@ -45,6 +45,11 @@ final class Body(initialShapes: Shape*):
     */
   private[sims] var placements: Long = 0
 
+  /** The largest distance from the centre of mass to a point of the body: how far a point of
+    * it moves when it turns by an angle a is at most extent * a.
+    */
+  private[sims] var extent: Double = 0
+
   /** The index of this body in its world's bodies, or -1 outside a world. */
   private[sims] var index: Int = -1
 
@@ -64,6 +69,7 @@ final class Body(initialShapes: Shape*):
     x = sx / m
     y = sy / m
     var inertia = 0.0
+    extent = 0
     val c = math.cos(-angle)
     val sn = math.sin(-angle)
     allCentred = true
@@ -71,6 +77,7 @@ final class Body(initialShapes: Shape*):
       val dx = s.x - x
       val dy = s.y - y
       inertia += s.I + s.mass * (dx * dx + dy * dy)
+      extent = math.max(extent, math.sqrt(dx * dx + dy * dy) + s.boundingRadius)
       offsetX(i) = dx * c - dy * sn
       offsetY(i) = dx * sn + dy * c
       relativeAngle(i) = s.angle - angle

@@ -26,6 +26,7 @@ final class Circle(val radius: Double, val density: Double) extends Shape:
     val dy = point.y - y
     dx * dx + dy * dy <= radius * radius
 
+  override private[sims] def boundingRadius: Double = radius
   override private[sims] def projectMin(ax: Double, ay: Double): Double = x * ax + y * ay - radius
   override private[sims] def projectMax(ax: Double, ay: Double): Double = x * ax + y * ay + radius
   override private[sims] def minX: Double = x - radius

@@ -85,6 +85,14 @@ abstract class Shape:
   /** The smallest axis-aligned box around the shape. */
   def AABB: AABB
 
+  /** The largest distance from the shape's centre to a point of the shape (an upper bound will
+    * do): how far a point of it can move when it turns. This default takes half the diagonal of
+    * the current AABB.
+    */
+  private[sims] def boundingRadius: Double =
+    val box = AABB
+    0.5 * math.hypot(box.maxVertex.x - box.minVertex.x, box.maxVertex.y - box.minVertex.y)
+
   /** The interval the shape covers on `axis`. */
   def project(axis: Vector2D): Projection
 

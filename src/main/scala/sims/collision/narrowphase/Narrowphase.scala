@@ -137,7 +137,7 @@ private[sims] final class Narrowphase:
     if slot.result eq c then slot.invalidate()
 
   /** A pair whose methods are not one built-in kind: through the partial functions. */
-  private def collideGeneral(r: Resolved, a: Shape, b: Shape): Collision =
+  def collideGeneral(r: Resolved, a: Shape, b: Shape): Collision =
     val colliding = r.test match
       case t: BuiltInMethods.Test => t.direct(a, b)
       case t => t((a, b))

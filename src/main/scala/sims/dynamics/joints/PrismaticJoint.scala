@@ -2,6 +2,7 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
+import sims.solver.soft.{JointRows, SoftBodies, SoftContext}
 
 /** Lets body 2 slide along a line fixed on body 1, without turning relative to it.
   *
@@ -124,5 +125,107 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val py = normalY * lineImpulse
     b1.displace(-px * b1.invMass, -py * b1.invMass, -(angular1 * lineImpulse + turnImpulse) * b1.invI)
     b2.displace(px * b2.invMass, py * b2.invMass, (angular2 * lineImpulse + turnImpulse) * b2.invI)
+
+  // ---- Soft step: the same two rows, C = (n . d, theta2 - theta1 - theta0), with K at the
+  // current geometry (arms and n at the start of the step turned by the bodies' rotations
+  // since), solved as a soft constraint (SOFTSTEP.md section 3).
+
+  private val accumulated = new Array[Double](2) // line, turn
+  private var index1, index2 = 0
+  private var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
+  private var startCentresX, startCentresY = 0.0 // centre2 - centre1 at the start of the step
+  private var startNormalX, startNormalY = 0.0
+
+  override private[sims] def softImpulse: Array[Double] = accumulated
+
+  override private[sims] def prepareSoft(context: SoftContext): Unit =
+    val bodies = context.bodies
+    index1 = node1.index
+    index2 = node2.index
+    prepare()
+    startArm1X = point1.armX; startArm1Y = point1.armY
+    startArm2X = point2.armX; startArm2Y = point2.armY
+    startNormalX = normalX; startNormalY = normalY
+    startCentresX = bodies.startX(index2) - bodies.startX(index1)
+    startCentresY = bodies.startY(index2) - bodies.startY(index1)
+
+  // The current line error, set by `measureSoft` with the normal and angular terms.
+  private var lineErrorSoft = 0.0
+
+  /** Sets n, a1 and a2 (the fields `prepare()` sets in the classic step) and the line error
+    * from the bodies' motion since the step began.
+    */
+  private def measureSoft(state: Array[Double]): Unit =
+    val s1 = index1 * SoftBodies.Stride
+    val s2 = index2 * SoftBodies.Stride
+    val c1 = state(s1 + 6); val sn1 = state(s1 + 7)
+    val c2 = state(s2 + 6); val sn2 = state(s2 + 7)
+    normalX = c1 * startNormalX - sn1 * startNormalY
+    normalY = sn1 * startNormalX + c1 * startNormalY
+    val arm1X = c1 * startArm1X - sn1 * startArm1Y
+    val arm1Y = sn1 * startArm1X + c1 * startArm1Y
+    val arm2X = c2 * startArm2X - sn2 * startArm2Y
+    val arm2Y = sn2 * startArm2X + c2 * startArm2Y
+    // d + r1 = p2 - x1
+    val reachX = startCentresX + state(s2 + 3) - state(s1 + 3) + arm2X
+    val reachY = startCentresY + state(s2 + 4) - state(s1 + 4) + arm2Y
+    angular1 = reachX * normalY - reachY * normalX
+    angular2 = arm2X * normalY - arm2Y * normalX
+    lineErrorSoft = normalX * (reachX - arm1X) + normalY * (reachY - arm1Y)
+
+  /** Applies the line impulse `line` and the turn impulse `turn` to both bodies. */
+  private def applySoft(bodies: SoftBodies, line: Double, turn: Double): Unit =
+    val state = bodies.state
+    val s1 = index1 * SoftBodies.Stride
+    val s2 = index2 * SoftBodies.Stride
+    val px = normalX * line
+    val py = normalY * line
+    state(s1) -= px * bodies.invMass(index1)
+    state(s1 + 1) -= py * bodies.invMass(index1)
+    state(s1 + 2) -= (angular1 * line + turn) * bodies.invI(index1)
+    state(s2) += px * bodies.invMass(index2)
+    state(s2 + 1) += py * bodies.invMass(index2)
+    state(s2 + 2) += (angular2 * line + turn) * bodies.invI(index2)
+
+  override private[sims] def directRows: Int = 2
+
+  override private[sims] def rowsSoft(context: SoftContext, rows: JointRows): Unit =
+    val bodies = context.bodies
+    val state = bodies.state
+    measureSoft(state)
+    val angleError = (bodies.startAngle(index2) + state(index2 * SoftBodies.Stride + 5)) -
+      (bodies.startAngle(index1) + state(index1 * SoftBodies.Stride + 5)) - referenceAngle
+    rows.count = 2
+    rows.set(0, -normalX, -normalY, -angular1, normalX, normalY, angular2, lineErrorSoft)
+    rows.set(1, 0, 0, -1, 0, 0, 1, angleError)
+
+  override private[sims] def warmStartSoft(context: SoftContext): Unit =
+    measureSoft(context.bodies.state)
+    applySoft(context.bodies, accumulated(0), accumulated(1))
+
+  override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
+    val bodies = context.bodies
+    val state = bodies.state
+    measureSoft(state)
+    val s1 = index1 * SoftBodies.Stride
+    val s2 = index2 * SoftBodies.Stride
+    var lineRight = normalX * (state(s2) - state(s1)) + normalY * (state(s2 + 1) - state(s1 + 1)) +
+      angular2 * state(s2 + 2) - angular1 * state(s1 + 2)
+    var turnRight = state(s2 + 2) - state(s1 + 2)
+    var massScale = 1.0
+    var impulseScale = 0.0
+    if useBias then
+      val softness = context.jointSoftness
+      val angleError = (bodies.startAngle(index2) + state(s2 + 5)) - (bodies.startAngle(index1) + state(s1 + 5)) - referenceAngle
+      lineRight += softness.biasRate * lineErrorSoft
+      turnRight += softness.biasRate * angleError
+      massScale = softness.massScale
+      impulseScale = softness.impulseScale
+    solve(lineRight, turnRight)
+    val line = -massScale * lineImpulse - impulseScale * accumulated(0)
+    val turn = -massScale * turnImpulse - impulseScale * accumulated(1)
+    accumulated(0) += line
+    accumulated(1) += turn
+    applySoft(bodies, line, turn)
 
   override def toString: String = s"PrismaticJoint($node1, $node2, axis = $axis)"

@@ -2,6 +2,7 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
+import sims.solver.soft.{JointRows, SoftBodies, SoftContext}
 
 /** Pins two bodies together at one point; they may turn freely about it (a hinge).
   *
@@ -123,5 +124,83 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     val turn2 = point2.armX * solutionY - point2.armY * solutionX
     b1.displace(-solutionX * b1.invMass, -solutionY * b1.invMass, -turn1 * b1.invI)
     b2.displace(solutionX * b2.invMass, solutionY * b2.invMass, turn2 * b2.invI)
+
+  // ---- Soft step: the point constraint C = p2 - p1 with the textbook K at the current arms
+  // (the arms at the start of the step turned by each body's rotation since), solved as a
+  // soft constraint (SOFTSTEP.md section 3): lambda = -massScale K^-1 (Cdot + biasRate C)
+  // - impulseScale lambdaAcc.
+
+  private val accumulated = new Array[Double](2)
+  private var index1, index2 = 0
+  private var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
+  private var startCentresX, startCentresY = 0.0 // centre2 - centre1 at the start of the step
+  private var arm1X, arm1Y, arm2X, arm2Y = 0.0 // current, set by `armsSoft`
+
+  override private[sims] def softImpulse: Array[Double] = accumulated
+
+  override private[sims] def prepareSoft(context: SoftContext): Unit =
+    val bodies = context.bodies
+    index1 = node1.index
+    index2 = node2.index
+    point1.update()
+    point2.update()
+    startArm1X = point1.armX; startArm1Y = point1.armY
+    startArm2X = point2.armX; startArm2Y = point2.armY
+    startCentresX = bodies.startX(index2) - bodies.startX(index1)
+    startCentresY = bodies.startY(index2) - bodies.startY(index1)
+
+  private def armsSoft(state: Array[Double]): Unit =
+    val s1 = index1 * SoftBodies.Stride
+    val s2 = index2 * SoftBodies.Stride
+    arm1X = state(s1 + 6) * startArm1X - state(s1 + 7) * startArm1Y
+    arm1Y = state(s1 + 7) * startArm1X + state(s1 + 6) * startArm1Y
+    arm2X = state(s2 + 6) * startArm2X - state(s2 + 7) * startArm2Y
+    arm2Y = state(s2 + 7) * startArm2X + state(s2 + 6) * startArm2Y
+
+  override private[sims] def directRows: Int = 2
+
+  override private[sims] def rowsSoft(context: SoftContext, rows: JointRows): Unit =
+    val state = context.bodies.state
+    armsSoft(state)
+    val s1 = index1 * SoftBodies.Stride
+    val s2 = index2 * SoftBodies.Stride
+    rows.count = 2
+    rows.set(0, -1, 0, arm1Y, 1, 0, -arm2Y, startCentresX + state(s2 + 3) - state(s1 + 3) + arm2X - arm1X)
+    rows.set(1, 0, -1, -arm1X, 0, 1, arm2X, startCentresY + state(s2 + 4) - state(s1 + 4) + arm2Y - arm1Y)
+
+  override private[sims] def warmStartSoft(context: SoftContext): Unit =
+    val bodies = context.bodies
+    armsSoft(bodies.state)
+    bodies.applyImpulse(index1, -accumulated(0), -accumulated(1), arm1X, arm1Y)
+    bodies.applyImpulse(index2, accumulated(0), accumulated(1), arm2X, arm2Y)
+
+  override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
+    val bodies = context.bodies
+    val state = bodies.state
+    armsSoft(state)
+    val s1 = index1 * SoftBodies.Stride
+    val s2 = index2 * SoftBodies.Stride
+    val cdotX = state(s2) - state(s2 + 2) * arm2Y - state(s1) + state(s1 + 2) * arm1Y
+    val cdotY = state(s2 + 1) + state(s2 + 2) * arm2X - state(s1 + 1) - state(s1 + 2) * arm1X
+    var rightX = cdotX
+    var rightY = cdotY
+    var massScale = 1.0
+    var impulseScale = 0.0
+    if useBias then
+      val softness = context.jointSoftness
+      val cX = startCentresX + state(s2 + 3) - state(s1 + 3) + arm2X - arm1X
+      val cY = startCentresY + state(s2 + 4) - state(s1 + 4) + arm2Y - arm1Y
+      rightX += softness.biasRate * cX
+      rightY += softness.biasRate * cY
+      massScale = softness.massScale
+      impulseScale = softness.impulseScale
+    val determinant = effectiveMassMatrix(arm1X, arm1Y, arm1X, arm1Y, arm2X, arm2Y, arm2X, arm2Y)
+    solve(determinant, rightX, rightY)
+    val impulseX = -massScale * solutionX - impulseScale * accumulated(0)
+    val impulseY = -massScale * solutionY - impulseScale * accumulated(1)
+    accumulated(0) += impulseX
+    accumulated(1) += impulseY
+    bodies.applyImpulse(index1, -impulseX, -impulseY, arm1X, arm1Y)
+    bodies.applyImpulse(index2, impulseX, impulseY, arm2X, arm2Y)
 
   override def toString: String = s"RevoluteJoint($node1, $node2, anchor = $anchor)"

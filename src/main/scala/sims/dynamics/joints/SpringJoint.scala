@@ -67,5 +67,8 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
 
   def correctPosition(h: Double): Unit = ()
 
+  /** Soft step: nothing to solve; the force is applied in every substep instead. */
+  override private[sims] def solveSoft(context: sims.solver.soft.SoftContext, useBias: Boolean): Unit = ()
+
   override def toString: String =
     s"SpringJoint($node1, $node2, springConstant = $springConstant, initialLength = $initialLength)"

@@ -1,0 +1,221 @@
+package sims.solver
+
+import sims.Defaults
+import sims.dynamics.{Checked, World}
+import sims.solver.soft.{ContactConstraints, SoftBodies, SoftWorkspace}
+
+/** The soft step (SOFTSTEP.md): substeps, soft constraints, warm starting, relaxation and
+  * speculative contacts, the design Box2D v3 made the field's best for stable stacks, long
+  * chains and high mass ratios. Choose it per world: `world.solver = SoftStep()`.
+  *
+  * One step, its stages in order (each a method below):
+  *   1. `advanceTime`
+  *   2. `loadBodies`: the bodies' state into flat arrays
+  *   3. `findContacts`: broadphase with bounds enlarged by `speculativeDistance`, manifolds
+  *      with feature ids, warm starting from the last step's contact of the same shape pair
+  *   4. `prepare`: effective masses, softness, the normal velocities before the step
+  *   5. `substeps` times: `integrateVelocities` (gravity and forces, the force joints' at the
+  *      substep's placements), `warmStart`, `solve` (with bias: joints, then contacts),
+  *      `integratePositions`, `relax` (`solve` without bias)
+  *   6. `applyRestitution`, once
+  *   7. `finish`: placements and velocities back into the bodies, forces cleared; the
+  *      contacts with their impulses kept for the next step
+  *
+  * Friction and restitution of a pair are the products of the two shapes' values, as in the
+  * classic step; `world.iterations` and `world.enablePositionCorrection` are the classic
+  * step's settings and are not used here.
+  *
+  * @param substeps substeps per `world.timeStep` (at least 1)
+  * @param contactHertz stiffness of contacts, Hz; used at most 0.25 / substep
+  * @param contactDampingRatio damping ratio of contacts
+  * @param staticContactFactor contacts with a fixed body use `contactHertz` times this
+  * @param jointHertz stiffness of rigid joints, Hz; used at most 0.25 / substep
+  * @param jointDampingRatio damping ratio of rigid joints
+  * @param contactSpeed the fastest that overlap is pushed apart, m/s
+  * @param restitutionThreshold impacts slower than this do not bounce, m/s
+  * @param linearSlop overlap tolerance of the narrowphase's choices, m
+  * @param speculativeDistance contact points are made this far before shapes touch, m
+  * @param contactPersistence a contact's manifold is kept (not computed again) while its bodies
+  *   moved less than this relative to each other since it was computed, m; 0 computes every step
+  * @param directJoints whether joints that form trees (chains, ragdolls) are solved exactly by
+  *   the linear-time direct solver, as rigid constraints; otherwise every joint is solved by
+  *   soft Gauss-Seidel sweeps with `jointHertz`, as in Box2D v3
+  */
+final case class SoftStep(
+    substeps: Int = Defaults.Substeps,
+    contactHertz: Double = Defaults.ContactHertz,
+    contactDampingRatio: Double = Defaults.ContactDampingRatio,
+    staticContactFactor: Double = Defaults.StaticContactFactor,
+    jointHertz: Double = Defaults.JointHertz,
+    jointDampingRatio: Double = Defaults.JointDampingRatio,
+    contactSpeed: Double = Defaults.ContactSpeed,
+    restitutionThreshold: Double = Defaults.RestitutionThreshold,
+    linearSlop: Double = Defaults.LinearSlop,
+    speculativeDistance: Double = Defaults.SpeculativeDistance,
+    contactPersistence: Double = Defaults.ContactPersistence,
+    directJoints: Boolean = true) extends Solver:
+  if substeps < 1 then throw IllegalArgumentException(s"substeps must be at least 1, got $substeps")
+  SoftStep.requirePositive("contactHertz", contactHertz)
+  SoftStep.requireNonNegative("contactDampingRatio", contactDampingRatio)
+  SoftStep.requirePositive("staticContactFactor", staticContactFactor)
+  SoftStep.requirePositive("jointHertz", jointHertz)
+  SoftStep.requireNonNegative("jointDampingRatio", jointDampingRatio)
+  SoftStep.requirePositive("contactSpeed", contactSpeed)
+  SoftStep.requireNonNegative("restitutionThreshold", restitutionThreshold)
+  SoftStep.requirePositive("linearSlop", linearSlop)
+  SoftStep.requireNonNegative("speculativeDistance", speculativeDistance)
+  SoftStep.requireNonNegative("contactPersistence", contactPersistence)
+
+  def step(world: World): Unit =
+    val workspace = world.workspace(classOf[SoftWorkspace], SoftWorkspace())
+    val h = world.timeStep / substeps
+    advanceTime(world)
+    loadBodies(world, workspace)
+    findContacts(world, workspace)
+    prepare(workspace, h)
+    var substep = 0
+    while substep < substeps do
+      integrateVelocities(world, workspace, h)
+      if substep == 0 then world.guard("joint forces", Checked.Forces)
+      warmStart(workspace)
+      solve(workspace, useBias = true)
+      integratePositions(workspace, h)
+      solve(workspace, useBias = false) // relax
+      substep += 1
+    applyRestitution(workspace)
+    finish(world, workspace)
+
+  private def advanceTime(world: World): Unit = world.time = world.time + world.timeStep
+
+  private def loadBodies(world: World, workspace: SoftWorkspace): Unit =
+    workspace.bodies.load(world.bodyList)
+    workspace.sortJoints(world, directJoints)
+
+  private def findContacts(world: World, workspace: SoftWorkspace): Unit =
+    if world.enableCollisionDetection then
+      workspace.finder.find(world, workspace.table, workspace.bodies, speculativeDistance, linearSlop, contactPersistence)
+    else workspace.table.begin()
+
+  private def prepare(workspace: SoftWorkspace, h: Double): Unit =
+    val rate = 1 / h
+    val contactStiffness = math.min(contactHertz, 0.25 * rate)
+    workspace.contactSoftness.set(contactStiffness, contactDampingRatio, h)
+    workspace.staticSoftness.set(staticContactFactor * contactStiffness, contactDampingRatio, h)
+    ContactConstraints.prepare(workspace.table.current, workspace.bodies, workspace.contactSoftness,
+      workspace.staticSoftness)
+    val context = workspace.context
+    context.bodies = workspace.bodies
+    context.h = h
+    context.inverseH = rate
+    context.jointSoftness.set(math.min(jointHertz, 0.25 * rate), jointDampingRatio, h)
+    val joints = workspace.constraintJoints
+    var i = 0
+    while i < joints.length do
+      joints(i).prepareSoft(context)
+      i += 1
+
+  /** Gravity and forces: v += h (g + F/m), w += h tau/I for every moving body; the force
+    * joints' forces are computed from the substep's placements and velocities.
+    */
+  private def integrateVelocities(world: World, workspace: SoftWorkspace, h: Double): Unit =
+    val bodies = workspace.bodies
+    if workspace.forceJoints.nonEmpty then applyForceJoints(workspace)
+    val gx = world.gravity.x
+    val gy = world.gravity.y
+    val state = bodies.state
+    var i = 0
+    while i < bodies.count do
+      val m = bodies.invMass(i)
+      if m != 0 then
+        val k = i * SoftBodies.Stride
+        state(k) += h * (gx + bodies.substepForceX(i) * m)
+        state(k + 1) += h * (gy + bodies.substepForceY(i) * m)
+        state(k + 2) += h * bodies.substepTorque(i) * bodies.invI(i)
+      i += 1
+
+  /** The force joints' forces at the substep's placements and velocities, added to the user's. */
+  private def applyForceJoints(workspace: SoftWorkspace): Unit =
+    val bodies = workspace.bodies
+    val touched = workspace.forceBodies
+    var t = 0
+    while t < touched.length do
+      val i = touched(t)
+      bodies.expose(i)
+      val b = bodies.bodies(i)
+      b.fx = bodies.forceX(i); b.fy = bodies.forceY(i); b.tau = bodies.torque(i)
+      t += 1
+    val joints = workspace.forceJoints
+    var j = 0
+    while j < joints.length do
+      joints(j).asInstanceOf[sims.dynamics.joints.ForceJoint].applyForce()
+      j += 1
+    t = 0
+    while t < touched.length do
+      val i = touched(t)
+      val b = bodies.bodies(i)
+      bodies.substepForceX(i) = b.fx; bodies.substepForceY(i) = b.fy; bodies.substepTorque(i) = b.tau
+      t += 1
+
+  /** Applies the impulses accumulated so far: joints', then contacts'. */
+  private def warmStart(workspace: SoftWorkspace): Unit =
+    workspace.trees.warmStart(workspace.context)
+    val joints = workspace.trees.iterative
+    var i = 0
+    while i < joints.length do
+      joints(i).warmStartSoft(workspace.context)
+      i += 1
+    ContactConstraints.warmStart(workspace.table.current, workspace.bodies)
+
+  /** One pass over the joints, then the contacts: with the bias (solve) or without (relax).
+    * Joint trees are solved exactly ([[sims.solver.soft.JointTrees]]), other joints by one soft
+    * Gauss-Seidel sweep.
+    */
+  private def solve(workspace: SoftWorkspace, useBias: Boolean): Unit =
+    workspace.trees.solve(workspace.context, useBias)
+    val joints = workspace.trees.iterative
+    var i = 0
+    while i < joints.length do
+      joints(i).solveSoft(workspace.context, useBias)
+      i += 1
+    ContactConstraints.solve(workspace.table.current, workspace.bodies, workspace.context.inverseH, contactSpeed, useBias)
+
+  /** dp += h v, dAngle += h w, and the turn's cosine and sine (integrated as a unit complex
+    * number, renormalised: no trigonometry per body and substep).
+    */
+  private def integratePositions(workspace: SoftWorkspace, h: Double): Unit =
+    val bodies = workspace.bodies
+    val state = bodies.state
+    var i = 0
+    while i < bodies.count do
+      val k = i * SoftBodies.Stride
+      val vx = state(k); val vy = state(k + 1); val w = state(k + 2)
+      state(k + 3) += h * vx
+      state(k + 4) += h * vy
+      if w != 0 then
+        state(k + 5) += h * w
+        val c = state(k + 6); val s = state(k + 7)
+        val turnedC = c - h * w * s
+        val turnedS = s + h * w * c
+        val length = math.sqrt(turnedC * turnedC + turnedS * turnedS)
+        state(k + 6) = turnedC / length
+        state(k + 7) = turnedS / length
+      i += 1
+
+  private def applyRestitution(workspace: SoftWorkspace): Unit =
+    ContactConstraints.restitution(workspace.table.current, workspace.bodies, restitutionThreshold)
+
+  private def finish(world: World, workspace: SoftWorkspace): Unit =
+    workspace.bodies.finish()
+    world.guard("soft step substeps", Checked.Velocities)
+    world.guard("soft step substeps", Checked.Positions)
+    workspace.table.commit()
+
+/** Checks of [[SoftStep]]'s parameters. */
+object SoftStep:
+  private def requirePositive(name: String, value: Double): Unit =
+    if !(value > 0) || value.isInfinite then
+      throw IllegalArgumentException(s"$name must be positive and finite, got $value")
+
+  private def requireNonNegative(name: String, value: Double): Unit =
+    if !(value >= 0) || value.isInfinite then
+      throw IllegalArgumentException(s"$name must be finite and at least 0, got $value")

@@ -1,0 +1,195 @@
+package sims.solver.soft
+
+import sims.solver.soft.ContactTable.*
+
+/** The soft step's contact constraints (SOFTSTEP.md sections 2 and 3), over the arrays of a
+  * [[Contacts]] generation and of [[SoftBodies]].
+  *
+  * Derivation, per point with arms rA, rB from the bodies' centres at the start of the step,
+  * normal n (from A to B) and tangent t = n.leftNormal:
+  *   C     = s, the separation, >= 0; during the substeps s = s0 + n . (dB(point) - dA(point))
+  *           with d(point) = dp + R(dAngle) r - r the point's displacement since the start
+  *   Cdot  = vn = n . (vB + wB x rB - vA - wA x rA)
+  *   K     = 1/mA + 1/mB + (rA x n)^2 / IA + (rB x n)^2 / IB     (its inverse: the normal mass)
+  *   lambda = -normalMass massScale (vn + bias) - impulseScale lambdaAcc, then lambdaAcc >= 0
+  * with the bias and scales of the soft rule: s > 0 (speculative) pushes only what would
+  * close the gap within the substep (bias s / h, rigid); an overlap is pushed out softly, at
+  * most `contactSpeed` fast, in the solve pass, and not at all in the relax pass. Friction:
+  * lambdaT = -tangentMass vt, the accumulated value within [-mu lambdaAcc, mu lambdaAcc].
+  */
+private[sims] object ContactConstraints:
+
+  /** Computes what stays fixed during the step: effective masses, the normal relative
+    * velocity before the step, and the softness (stiffer against fixed bodies). The arms and
+    * separations are the collision stage's.
+    */
+  def prepare(contacts: Contacts, bodies: SoftBodies, softness: Softness, staticSoftness: Softness): Unit =
+    val data = contacts.data
+    val state = bodies.state
+    var c = 0
+    while c < contacts.count do
+      val a = contacts.bodyA(c)
+      val b = contacts.bodyB(c)
+      val mA = bodies.invMass(a); val iA = bodies.invI(a)
+      val mB = bodies.invMass(b); val iB = bodies.invI(b)
+      val k = c * Stride
+      val soft = if mA == 0 || mB == 0 then staticSoftness else softness
+      data(k + BiasRate) = soft.biasRate
+      data(k + MassScale) = soft.massScale
+      data(k + ImpulseScale) = soft.impulseScale
+      val nx = data(k + NormalX); val ny = data(k + NormalY)
+      val tx = -ny; val ty = nx
+      val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
+      var p = 0
+      while p < contacts.pointCount(c) do
+        val q = k + FirstPoint + p * PointStride
+        val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
+        val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
+        data(q + BaseSeparation) = data(q + Separation) - ((rBx - rAx) * nx + (rBy - rAy) * ny)
+        val rnA = rAx * ny - rAy * nx; val rnB = rBx * ny - rBy * nx
+        val kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB
+        data(q + NormalMass) = if kNormal > 0 then 1 / kNormal else 0
+        val rtA = rAx * ty - rAy * tx; val rtB = rBx * ty - rBy * tx
+        val kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB
+        data(q + TangentMass) = if kTangent > 0 then 1 / kTangent else 0
+        data(q + MaxNormalImpulse) = 0
+        val dvx = state(sB) - state(sB + 2) * rBy - state(sA) + state(sA + 2) * rAy
+        val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
+        data(q + RelativeVelocity) = dvx * nx + dvy * ny
+        p += 1
+      c += 1
+
+  /** Applies each point's accumulated impulses (from the last step, then from the substeps). */
+  def warmStart(contacts: Contacts, bodies: SoftBodies): Unit =
+    val data = contacts.data
+    var c = 0
+    while c < contacts.count do
+      val a = contacts.bodyA(c)
+      val b = contacts.bodyB(c)
+      val k = c * Stride
+      val nx = data(k + NormalX); val ny = data(k + NormalY)
+      var p = 0
+      while p < contacts.pointCount(c) do
+        val q = k + FirstPoint + p * PointStride
+        val normal = data(q + NormalImpulse)
+        val tangent = data(q + TangentImpulse)
+        // n normal + t tangent, t = n.leftNormal = (-ny, nx)
+        val px = nx * normal - ny * tangent
+        val py = ny * normal + nx * tangent
+        bodies.applyImpulse(a, -px, -py, data(q + AnchorAX), data(q + AnchorAY))
+        bodies.applyImpulse(b, px, py, data(q + AnchorBX), data(q + AnchorBY))
+        p += 1
+      c += 1
+
+  /** One pass over all contacts: normal impulses (with the soft bias when `useBias`, the
+    * solve pass; without, the relax pass), then, in the relax pass, friction.
+    */
+  def solve(contacts: Contacts, bodies: SoftBodies, inverseH: Double, contactSpeed: Double, useBias: Boolean): Unit =
+    val data = contacts.data
+    val state = bodies.state
+    var c = 0
+    while c < contacts.count do
+      val a = contacts.bodyA(c)
+      val b = contacts.bodyB(c)
+      val mA = bodies.invMass(a); val iA = bodies.invI(a)
+      val mB = bodies.invMass(b); val iB = bodies.invI(b)
+      val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
+      var vAx = state(sA); var vAy = state(sA + 1); var wA = state(sA + 2)
+      var vBx = state(sB); var vBy = state(sB + 1); var wB = state(sB + 2)
+      // Displacement of B relative to A's frame of motion: the points' current separation.
+      val dpx = state(sB + 3) - state(sA + 3)
+      val dpy = state(sB + 4) - state(sA + 4)
+      val cosA = state(sA + 6); val sinA = state(sA + 7)
+      val cosB = state(sB + 6); val sinB = state(sB + 7)
+      val k = c * Stride
+      val nx = data(k + NormalX); val ny = data(k + NormalY)
+      val count = contacts.pointCount(c)
+      var p = 0
+      while p < count do
+        val q = k + FirstPoint + p * PointStride
+        val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
+        val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
+        // current separation from the bodies' motion since the start of the step
+        val dx = dpx + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
+        val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
+        val s = dx * nx + dy * ny + data(q + BaseSeparation)
+        var bias = 0.0
+        var massScale = 1.0
+        var impulseScale = 0.0
+        if s > 0 then bias = s * inverseH // speculative: may close the gap, no more
+        else if useBias then
+          bias = math.max(data(k + BiasRate) * s, -contactSpeed)
+          massScale = data(k + MassScale)
+          impulseScale = data(k + ImpulseScale)
+        val dvx = vBx - wB * rBy - vAx + wA * rAy
+        val dvy = vBy + wB * rBx - vAy - wA * rAx
+        val vn = dvx * nx + dvy * ny
+        val accumulated = data(q + NormalImpulse)
+        var impulse = -data(q + NormalMass) * massScale * (vn + bias) - impulseScale * accumulated
+        val total = math.max(accumulated + impulse, 0.0)
+        impulse = total - accumulated
+        data(q + NormalImpulse) = total
+        if impulse > data(q + MaxNormalImpulse) then data(q + MaxNormalImpulse) = impulse
+        val px = impulse * nx; val py = impulse * ny
+        vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
+        vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
+        p += 1
+      // Friction, in the relax pass only (as in Box2D v3; solving it in the solve pass too
+      // measured no better on the stack, pyramid and ball-pit scenes), bounded by the normal
+      // impulses just found.
+      val tx = -ny; val ty = nx
+      val friction = data(k + Friction)
+      p = if useBias then count else 0
+      while p < count do
+        val q = k + FirstPoint + p * PointStride
+        val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
+        val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
+        val dvx = vBx - wB * rBy - vAx + wA * rAy
+        val dvy = vBy + wB * rBx - vAy - wA * rAx
+        val vt = dvx * tx + dvy * ty
+        val accumulated = data(q + TangentImpulse)
+        val bound = friction * data(q + NormalImpulse)
+        val total = math.max(-bound, math.min(bound, accumulated - data(q + TangentMass) * vt))
+        val impulse = total - accumulated
+        data(q + TangentImpulse) = total
+        val px = impulse * tx; val py = impulse * ty
+        vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
+        vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
+        p += 1
+      state(sA) = vAx; state(sA + 1) = vAy; state(sA + 2) = wA
+      state(sB) = vBx; state(sB + 1) = vBy; state(sB + 2) = wB
+      c += 1
+
+  /** Once per step, after the substeps: a point that was approaching faster than `threshold`
+    * before the step and carried a normal impulse during it bounces, its normal velocity set
+    * to -e times the one before (impulse clamped as always).
+    */
+  def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double): Unit =
+    val data = contacts.data
+    val state = bodies.state
+    var c = 0
+    while c < contacts.count do
+      val k = c * Stride
+      val e = data(k + Restitution)
+      if e != 0 then
+        val a = contacts.bodyA(c)
+        val b = contacts.bodyB(c)
+        val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
+        val nx = data(k + NormalX); val ny = data(k + NormalY)
+        var p = 0
+        while p < contacts.pointCount(c) do
+          val q = k + FirstPoint + p * PointStride
+          if data(q + RelativeVelocity) < -threshold && data(q + MaxNormalImpulse) > 0 then
+            val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
+            val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
+            val dvx = state(sB) - state(sB + 2) * rBy - state(sA) + state(sA + 2) * rAy
+            val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
+            val vn = dvx * nx + dvy * ny
+            val accumulated = data(q + NormalImpulse)
+            val total = math.max(accumulated - data(q + NormalMass) * (vn + e * data(q + RelativeVelocity)), 0.0)
+            val impulse = total - accumulated
+            data(q + NormalImpulse) = total
+            bodies.applyImpulse(a, -impulse * nx, -impulse * ny, rAx, rAy)
+            bodies.applyImpulse(b, impulse * nx, impulse * ny, rBx, rBy)
+          p += 1
+      c += 1

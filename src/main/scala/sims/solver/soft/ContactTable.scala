@@ -1,0 +1,166 @@
+package sims.solver.soft
+
+import sims.dynamics.Shape
+
+/** The soft step's contacts: one record per touching (or nearly touching) pair of shapes, with
+  * at most two points, in flat arrays (SOFTSTEP.md sections 1 and 2).
+  *
+  * Two generations are kept: the committed one (the last step's contacts, with the impulses
+  * they ended with) and the one being built for this step. A new contact finds the last
+  * step's record of the same shape pair through a table keyed by the pair (never by position
+  * in a list), and each new point takes over the impulses of the old point with the same
+  * feature id (warm starting). `commit()` makes the new generation the last step's; a step
+  * that fails before it leaves the committed one as it was.
+  */
+private[sims] final class ContactTable:
+  import ContactTable.*
+
+  /** The generation being built (this step's contacts). */
+  var current: Contacts = Contacts()
+  /** The committed generation (the last step's contacts). */
+  var committed: Contacts = Contacts()
+  private val index = PairIndex()
+
+  /** Starts building this step's contacts. */
+  def begin(): Unit = current.count = 0
+
+  /** The committed contact of the shape pair `key`, or -1. */
+  def lastOf(key: Long): Int = index.get(key)
+
+  /** Makes this step's contacts the last step's. */
+  def commit(): Unit =
+    val built = current
+    current = committed
+    committed = built
+    index.rebuild(committed.keys, committed.count)
+
+  /** A copy of the committed generation (for a snapshot of the world). */
+  def copyCommitted(): Contacts = committed.copy()
+
+  /** Puts back a copy taken by `copyCommitted` as the committed generation. */
+  def restoreCommitted(saved: Contacts): Unit =
+    committed = saved.copy()
+    index.rebuild(committed.keys, committed.count)
+
+private[sims] object ContactTable:
+  /** The key of the shape pair (a, b): their join orders, the first in the high half. */
+  def key(a: Shape, b: Shape): Long = (a.worldIndex.toLong << 32) | (b.worldIndex.toLong & 0xffffffffL)
+
+  // Offsets in a contact's block of `Stride` doubles.
+  inline val NormalX = 0
+  inline val NormalY = 1
+  inline val Friction = 2
+  inline val Restitution = 3
+  inline val BiasRate = 4
+  inline val MassScale = 5
+  inline val ImpulseScale = 6
+  // The bodies' placements when the manifold was computed (for keeping it, see ContactFinder):
+  // both rotations and B's centre in A's frame.
+  inline val CachedAngleA = 7
+  inline val CachedAngleB = 8
+  inline val CachedRelativeX = 9
+  inline val CachedRelativeY = 10
+  /** Offset of the first point's block; point p starts at `FirstPoint + p * PointStride`. */
+  inline val FirstPoint = 12
+  // Offsets in a point's block.
+  inline val AnchorAX = 0 // arm from A's centre at the start of the step
+  inline val AnchorAY = 1
+  inline val AnchorBX = 2 // arm from B's centre
+  inline val AnchorBY = 3
+  inline val BaseSeparation = 4 // separation minus n . (anchorB - anchorA)
+  inline val NormalMass = 5
+  inline val TangentMass = 6
+  inline val NormalImpulse = 7 // accumulated over the step (and warm started)
+  inline val TangentImpulse = 8
+  inline val MaxNormalImpulse = 9 // the largest normal impulse applied in one solve
+  inline val RelativeVelocity = 10 // normal relative velocity before the step
+  inline val Separation = 11 // at the start of the step
+  inline val PointX = 12 // world position at the start of the step (A's anchor point)
+  inline val PointY = 13
+  // The manifold's anchors (world frame) and separation when it was computed.
+  inline val CachedAnchorAX = 14
+  inline val CachedAnchorAY = 15
+  inline val CachedAnchorBX = 16
+  inline val CachedAnchorBY = 17
+  inline val CachedSeparation = 18
+  inline val PointStride = 20
+  inline val Stride = FirstPoint + 2 * PointStride
+
+/** One generation of contacts, in flat arrays: contact c has shapes, bodies (their indices),
+  * the pair's key, point count and ids, the polygon side a polygon-circle contact was measured
+  * from, and `ContactTable.Stride` doubles of data from `c * Stride`.
+  */
+private[sims] final class Contacts:
+  import ContactTable.*
+
+  /** Number of contacts. */
+  var count: Int = 0
+  var shapeA, shapeB: Array[Shape] = new Array[Shape](16)
+  var bodyA, bodyB: Array[Int] = new Array[Int](16)
+  var keys: Array[Long] = new Array[Long](16)
+  var pointCount: Array[Int] = new Array[Int](16)
+  var ids: Array[Int] = new Array[Int](32)
+  var side: Array[Int] = new Array[Int](16)
+  var data: Array[Double] = new Array[Double](16 * Stride)
+
+  /** Appends an empty contact and returns its index. */
+  def add(): Int =
+    if count == keys.length then grow(2 * count)
+    count += 1
+    count - 1
+
+  /** A deep copy. */
+  def copy(): Contacts =
+    val c = Contacts()
+    c.grow(math.max(count, 16))
+    c.count = count
+    System.arraycopy(shapeA, 0, c.shapeA, 0, count); System.arraycopy(shapeB, 0, c.shapeB, 0, count)
+    System.arraycopy(bodyA, 0, c.bodyA, 0, count); System.arraycopy(bodyB, 0, c.bodyB, 0, count)
+    System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(pointCount, 0, c.pointCount, 0, count)
+    System.arraycopy(ids, 0, c.ids, 0, 2 * count); System.arraycopy(side, 0, c.side, 0, count)
+    System.arraycopy(data, 0, c.data, 0, count * Stride)
+    c
+
+  private def grow(capacity: Int): Unit =
+    shapeA = java.util.Arrays.copyOf(shapeA, capacity); shapeB = java.util.Arrays.copyOf(shapeB, capacity)
+    bodyA = java.util.Arrays.copyOf(bodyA, capacity); bodyB = java.util.Arrays.copyOf(bodyB, capacity)
+    keys = java.util.Arrays.copyOf(keys, capacity); pointCount = java.util.Arrays.copyOf(pointCount, capacity)
+    ids = java.util.Arrays.copyOf(ids, 2 * capacity); side = java.util.Arrays.copyOf(side, capacity)
+    data = java.util.Arrays.copyOf(data, capacity * Stride)
+
+/** An open-addressing table from a pair key to a contact index; lookups depend on the key only,
+  * so the solver's results never depend on hash order.
+  */
+private[soft] final class PairIndex:
+  private var keys = new Array[Long](64)
+  private var values = new Array[Int](64)
+  private var used = new Array[Boolean](64)
+  private var mask = 63
+
+  /** The index stored for `key`, or -1. */
+  def get(key: Long): Int =
+    var slot = hash(key) & mask
+    while used(slot) && keys(slot) != key do slot = (slot + 1) & mask
+    if used(slot) then values(slot) else -1
+
+  /** Holds exactly keys(0 until count), key i giving i. */
+  def rebuild(source: Array[Long], count: Int): Unit =
+    if keys.length < 2 * count then
+      val capacity = Integer.highestOneBit(math.max(2 * count, 32)) * 2
+      keys = new Array[Long](capacity)
+      values = new Array[Int](capacity)
+      used = new Array[Boolean](capacity)
+      mask = capacity - 1
+    else java.util.Arrays.fill(used, false)
+    var i = 0
+    while i < count do
+      var slot = hash(source(i)) & mask
+      while used(slot) && keys(slot) != source(i) do slot = (slot + 1) & mask
+      used(slot) = true
+      keys(slot) = source(i)
+      values(slot) = i
+      i += 1
+
+  private inline def hash(key: Long): Int =
+    val h = key * 0x9e3779b97f4a7c15L
+    (h ^ (h >>> 29)).toInt
