@@ -111,7 +111,7 @@ object Scenes:
     val y: Double = 10.0
 
   /** BallStack, the original SiMS example (SiMS only): the examples' scene
-    * `sims.examples.scenes.BallStack` itself (ground, walls 3.5 m apart inside, 52 balls of
+    * `sims.scenes.BallStack` itself (ground, walls 3.5 m apart inside, 52 balls of
     * radius 0.2, SiMS's default materials). The numbers here are for the sanity check.
     */
   object BallStack:

@@ -68,7 +68,7 @@ object SimsScenes:
           world += DistanceJoint(links(i - 1), links(i - 1).pos, links(i), links(i).pos)
         links.tail
       case "ballstack" =>
-        val stack = sims.examples.scenes.BallStack.build().world
+        val stack = sims.scenes.BallStack.build().world
         return Built(stack, stack.bodies.filterNot(_.fixed).toIndexedSeq)
       case other =>
         val n = Scenes.ballpitSize(other).getOrElse(throw IllegalArgumentException(s"unknown scene $other"))

@@ -1,4 +1,4 @@
-package sims.examples.scenes
+package sims.scenes
 
 import sims.dynamics.Body
 import sims.dynamics.joints.{DistanceJoint, SpringJoint}

@@ -1,4 +1,4 @@
-package sims.examples.scenes
+package sims.scenes
 
 import sims.geometry.Vector2D
 

@@ -1,4 +1,4 @@
-package sims.examples.scenes
+package sims.scenes
 
 import org.scalatest.funsuite.AnyFunSuite
 import sims.dynamics.{Body, World}

@@ -1,4 +1,4 @@
-package sims.examples.scenes
+package sims.scenes
 
 /** The registry of all example scenes, in a fixed order (the original's first). */
 object Scenes:
