@@ -28,11 +28,12 @@ final case class SceneAction(label: String, run: () => Unit)
 /** A scene built and ready to step: its world and its optional action. */
 final case class Staged(world: World, action: Option[SceneAction] = None)
 
-/** An example scene: a recipe for a fresh world, with the view a camera should show and the
-  * region its bodies are expected to stay in (checked by the tests).
+/** A scene: a recipe for a fresh world, with the view a camera should show and the region its
+  * bodies are expected to stay in (checked by the tests). The examples, the benchmarks and the
+  * tests all build their worlds from scenes; [[Scenes.find]] finds any of them by name.
   */
 trait Scene:
-  /** Short name used on the command line and in the viewer, e.g. "BallStack". */
+  /** Short name used on the command line, in the viewer and by the bench, e.g. "BallStack". */
   def name: String
 
   /** One sentence saying what the scene shows. */
@@ -47,7 +48,7 @@ trait Scene:
   /** Builds a fresh world for this scene (every call gives an independent one). */
   def build(): Staged
 
-/** Building blocks shared by the scenes. */
+/** Building blocks shared by the scenes and by the tests that set up small worlds. */
 object Scene:
   /** A fixed box centred at `centre`, rotated by `rotation` (e.g. ground, walls, slopes). */
   def fixedBox(centre: Vector2D, halfWidth: Double, halfHeight: Double, rotation: Double = 0): Body =
@@ -63,6 +64,12 @@ object Scene:
     */
   def ground(halfWidth: Double, centreX: Double = 0): Body =
     fixedBox(Vector2D(centreX, -0.5), halfWidth, 0.5)
+
+  /** A fixed ground (top face at y = 0, `halfWidth` each side of x = 0) and two fixed walls
+    * 0.5 m thick standing on it, `height` high, whose inner faces are `inner` from the middle.
+    */
+  def container(halfWidth: Double, inner: Double, height: Double): Seq[Body] =
+    ground(halfWidth) +: Seq(-(inner + 0.25), inner + 0.25).map(x => fixedBox(Vector2D(x, height / 2), 0.25, height / 2))
 
   /** A fixed plank of thickness 2 `halfThickness` whose top face runs from `from` to `to`. */
   def ramp(from: Vector2D, to: Vector2D, halfThickness: Double = 0.25): Body =

@@ -4,15 +4,15 @@ import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import sims.dynamics.{Body, Circle, Rectangle, World}
 import sims.geometry.Vector2D
+import sims.scenes.{BallStack, Scene}
 
 /** Whole-world behaviour of contacts. */
 class CollisionSimulationSpec extends AnyFunSuite with Matchers:
-  import Scenes.*
 
   test("a bouncing ball's apex heights shrink by about e^2 per bounce, then it rests") {
     val world = World()
-    val ground = Scenes.ground()
-    val ball = Scenes.ball(0.2, 0, 2)
+    val ground = Scene.ground(10)
+    val ball = Scene.ball(Vector2D(0, 2.2), 0.2)
     world += ground
     world += ball
     val e = ground.shapes.head.restitution * ball.shapes.head.restitution // defaults: 0.49
@@ -34,9 +34,9 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
     // Gravity's velocity of the contact step is reflected too, so a bounce of about
     // 2 cm survives: pinned here so a change of the solver shows.
     val world = World()
-    val ground = Scenes.ground()
+    val ground = Scene.ground(10)
     ground.shapes.head.restitution = 1
-    val ball = Scenes.ball(0.2, 0, 2)
+    val ball = Scene.ball(Vector2D(0, 2.2), 0.2)
     ball.shapes.head.restitution = 0.8
     world += ground
     world += ball
@@ -49,9 +49,9 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
 
   test("restitution 0: the ball does not bounce") {
     val world = World()
-    val ball = Scenes.ball(0.2, 0, 1)
+    val ball = Scene.ball(Vector2D(0, 1.2), 0.2)
     ball.shapes.head.restitution = 0
-    world += Scenes.ground()
+    world += Scene.ground(10)
     world += ball
     var touched = false
     for _ <- 1 to 180 do
@@ -64,7 +64,7 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
 
   test("a box dropped rotated comes to rest flat on a face") {
     val world = World()
-    world += Scenes.ground()
+    world += Scene.ground(10)
     val box = Rectangle(0.5, 0.3, 1)
     box.pos = Vector2D(0, 1.5)
     val body = box.asBody
@@ -86,8 +86,8 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
   test("a head-on collision of two free equal balls conserves linear momentum") {
     val world = World()
     world.gravity = Vector2D.Null
-    val a = Scenes.ball(0.5, -2, 0)
-    val b = Scenes.ball(0.5, 2, 0)
+    val a = Scene.ball(Vector2D(-2, 0.5), 0.5)
+    val b = Scene.ball(Vector2D(2, 0.5), 0.5)
     a.linearVelocity = Vector2D(3, 0.1)
     b.linearVelocity = Vector2D(-1, 0)
     world += a
@@ -102,7 +102,7 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
   }
 
   test("50 balls poured into a fixed box stay inside for 20 s") {
-    val (world, balls) = ballStack(50)
+    val (world, balls) = BallStack.withBalls(50)
     for _ <- 1 to 20 * 60 do
       world.step()
       for b <- balls do
@@ -113,8 +113,8 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
 
   test("contacts of a world after a step can be inspected") {
     val world = World()
-    val ground = Scenes.ground()
-    val ball = Scenes.ball(0.2, 0, -0.05) // sunk 5 cm: still in contact after the step
+    val ground = Scene.ground(10)
+    val ball = Scene.ball(Vector2D(0, 0.15), 0.2) // sunk 5 cm: still in contact after the step
     world += ground
     world += ball
     world.step()
@@ -130,8 +130,8 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
   test("collision detection can be switched off") {
     val world = World()
     world.enableCollisionDetection = false
-    val ball = Scenes.ball(0.2, 0, 0.1)
-    world += Scenes.ground()
+    val ball = Scene.ball(Vector2D(0, 0.3), 0.2)
+    world += Scene.ground(10)
     world += ball
     for _ <- 1 to 60 do world.step()
     ball.pos.y should be < -2.0
@@ -145,8 +145,8 @@ class CollisionSimulationSpec extends AnyFunSuite with Matchers:
       def detect(): Unit = detections += 1
     val world = new World:
       override val detector: Detector = NoCollisions
-    val ball = Scenes.ball(0.2, 0, 0.1)
-    world += Scenes.ground()
+    val ball = Scene.ball(Vector2D(0, 0.3), 0.2)
+    world += Scene.ground(10)
     world += ball
     for _ <- 1 to 60 do world.step()
     ball.pos.y should be < -2.0

@@ -2,15 +2,15 @@ package sims.robustness
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
-import sims.collision.Scenes
 import sims.dynamics.{Circle, World}
 import sims.dynamics.joints.DistanceJoint
 import sims.geometry.Vector2D
+import sims.scenes.BallStack
 
 class GuardAndReplaySpec extends AnyFunSuite with Matchers:
 
   test("a step that would make a velocity infinite throws, naming body and phase, and changes nothing") {
-    val (world, balls) = Scenes.ballStack(10)
+    val (world, balls) = BallStack.withBalls(10)
     for _ <- 1 to 30 do world.step()
     val before = StateHash(world)
     balls(3).applyForce(Vector2D(Double.MaxValue, 0)) // finite, but F / m overflows
@@ -25,7 +25,7 @@ class GuardAndReplaySpec extends AnyFunSuite with Matchers:
   }
 
   test("an infinite force from the forces phase is caught before it is integrated") {
-    val (world, balls) = Scenes.ballStack(3)
+    val (world, balls) = BallStack.withBalls(3)
     balls(0).applyForce(Vector2D(Double.MaxValue, 0))
     balls(0).applyForce(Vector2D(Double.MaxValue, 0)) // the sum overflows
     val before = StateHash(world)
@@ -48,7 +48,7 @@ class GuardAndReplaySpec extends AnyFunSuite with Matchers:
   }
 
   test("restoring a snapshot and stepping again replays the run bit for bit") {
-    val (world, _) = Scenes.ballStack(30)
+    val (world, _) = BallStack.withBalls(30)
     for _ <- 1 to 60 do world.step()
     val state = world.snapshot()
     state.timeOfState shouldBe world.time
@@ -61,7 +61,7 @@ class GuardAndReplaySpec extends AnyFunSuite with Matchers:
   }
 
   test("a snapshot cannot be restored into a world with other bodies") {
-    val (world, _) = Scenes.ballStack(3)
+    val (world, _) = BallStack.withBalls(3)
     val state = world.snapshot()
     world += Circle(1, 1).asBody
     intercept[IllegalArgumentException](world.restore(state)).getMessage should include("other bodies")

@@ -4,6 +4,7 @@ import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import sims.dynamics.{Body, Circle, Rectangle, Shape}
 import sims.geometry.Vector2D
+import sims.scenes.BallStack
 
 /** The world's contact solver must correct velocities exactly as calling each collision's own
   * `correctVelocity` in order would: same order, same arithmetic, same bits.
@@ -82,7 +83,7 @@ class ContactSolverSpec extends AnyFunSuite with Matchers:
     * its collisions just detected.
     */
   private def pile(): (Seq[Body], IndexedSeq[Collision]) =
-    val (world, _) = Scenes.ballStack(60)
+    val (world, _) = BallStack.withBalls(60)
     for _ <- 1 to 60 do world.step()
     world.detector.detect()
     (world.bodies.toSeq, world.detector.collisions.toIndexedSeq)
@@ -97,7 +98,7 @@ class ContactSolverSpec extends AnyFunSuite with Matchers:
 
   test("after a body leaves the world, the solver still gives the bits of list order") {
     def thinned(): (Seq[Body], IndexedSeq[Collision]) =
-      val (world, balls) = Scenes.ballStack(60)
+      val (world, balls) = BallStack.withBalls(60)
       for _ <- 1 to 30 do world.step()
       world -= balls(7) // the bodies after it get new keys
       for _ <- 1 to 30 do world.step()

@@ -2,10 +2,10 @@ package sims.robustness
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
-import sims.collision.Scenes
 import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, World}
 import sims.dynamics.joints.{DistanceJoint, SpringJoint}
 import sims.geometry.Vector2D
+import sims.scenes.Scene
 
 /** Same inputs, same outputs, bit for bit. */
 class DeterminismSpec extends AnyFunSuite with Matchers:
@@ -23,7 +23,7 @@ class DeterminismSpec extends AnyFunSuite with Matchers:
         case _ => RegularPolygon(5, 0.25, 1)
       shape.pos = Vector2D(-1.5 + (i % 4) * 0.9 + 0.05 * (i / 4), 0.4 + (i / 4) * 0.7)
       created(i) = shape.asBody
-    world += Scenes.ground(3)
+    world += Scene.ground(3)
     created.foreach(world += _)
     world += DistanceJoint(created(0), created(0).pos, created(5), created(5).pos)
     world += SpringJoint(created(1), created(2), 30)

@@ -2,9 +2,9 @@ package sims.robustness
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
-import sims.collision.Scenes
 import sims.dynamics.{Body, Rectangle, World}
 import sims.geometry.Vector2D
+import sims.scenes.{BallStack, Scene}
 
 /** Long runs stay finite, contained, and come to rest. */
 class StabilitySpec extends AnyFunSuite with Matchers:
@@ -27,7 +27,7 @@ class StabilitySpec extends AnyFunSuite with Matchers:
     (start, end)
 
   test("BallStack runs 100 s: finite, inside the container, kinetic energy below 1% of the start", sims.SlowTest) {
-    val (world, balls) = Scenes.ballStack(52)
+    val (world, balls) = BallStack.withBalls(52)
     val (start, end) = runAndCheck(world, balls, b => math.abs(b.pos.x) < 2 && b.pos.y > 0 && b.pos.y < 20)
     info(f"energy at start $start%.2f J, kinetic energy after 100 s $end%.5f J")
     end should be < 0.01 * start
@@ -37,7 +37,7 @@ class StabilitySpec extends AnyFunSuite with Matchers:
     // The faithful solver (no warm starting, full overlap correction at every contact point)
     // does not keep a tall stack standing: the boxes topple within seconds and settle on the
     // floor. This test holds the laws; the toppling is reported, not hidden.
-    val world = Scenes.container(halfWidth = 5, inner = 4, height = 6)
+    val world = Scene.worldOf(Scene.container(halfWidth = 5, inner = 4, height = 6)*)
     val boxes = for i <- 0 until 10 yield
       val r = Rectangle(0.3, 0.2, 1)
       r.pos = Vector2D(0, 0.21 + i * 0.41) // 1 cm apart: see NarrowphaseSpec on exactly touching boxes
