@@ -105,5 +105,7 @@ lazy val bench = (project in file("bench"))
     ),
     coverageEnabled := false,
     run / fork := true,
-    run / javaOptions ++= Seq("-Xmx2g")
+    run / javaOptions ++= Seq("-Xmx2g"),
+    // Tools' output as it is (no log prefix), e.g. to compare `Dump` with Box2D's dump.
+    run / outputStrategy := Some(StdoutOutput)
   )

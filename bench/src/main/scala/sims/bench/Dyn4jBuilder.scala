@@ -5,9 +5,12 @@ import org.dyn4j.dynamics.{Body, ContinuousDetectionMode}
 import org.dyn4j.dynamics.joint.DistanceJoint
 import org.dyn4j.geometry.{Convex, Geometry, MassType}
 import org.dyn4j.world.World
+import sims.scenes.{Layout, Outline}
 
-/** The benchmark scenes in dyn4j. */
-object Dyn4jScenes:
+/** Builds a layout in dyn4j: body for body and joint for joint, with the bench's iterations
+  * and the peers' settings.
+  */
+object Dyn4jBuilder:
   private final class Built(val world: World[Body], val dynamic: IndexedSeq[Body]) extends EngineScene:
     def step(): Unit = world.step(1)
     def dynamicStates: Array[Double] =
@@ -23,49 +26,39 @@ object Dyn4jScenes:
       }
       out.result()
 
-  private def body(world: World[Body], fixed: Boolean, x: Double, y: Double, shape: Convex,
-      collide: Boolean = true): Body =
-    val b = Body()
-    val fixture = b.addFixture(shape, Scenes.Density, Scenes.Friction, Scenes.Restitution)
-    if !collide then fixture.setFilter(CategoryFilter(1, 0)) // no category accepts it
-    b.setMass(if fixed then MassType.INFINITE else MassType.NORMAL)
-    b.translate(x, y)
-    world.addBody(b)
-    b
+  private def shape(outline: Outline): Convex = outline match
+    case Outline.Circle(radius) => Geometry.createCircle(radius)
+    case Outline.Box(halfWidth, halfHeight) => Geometry.createRectangle(2 * halfWidth, 2 * halfHeight)
 
-  private def staticBox(world: World[Body], s: Scenes.StaticBox): Body =
-    body(world, true, s.x, s.y, Geometry.createRectangle(2 * s.halfWidth, 2 * s.halfHeight))
+  /** The filter of group g > 0: its own category, and a mask of every category but its own
+    * (bodies of group 0 keep dyn4j's default filter, which allows every pair).
+    */
+  private def filter(group: Int): CategoryFilter =
+    require(group < 64, s"dyn4j's categories hold groups up to 63, not $group")
+    CategoryFilter(1L << group, ~(1L << group))
 
-  /** Builds the named scene. */
-  def build(scene: String): EngineScene =
+  /** Builds the layout. */
+  def build(layout: Layout): EngineScene =
     val world = World[Body]()
-    world.setGravity(0, Scenes.Gravity)
+    world.setGravity(layout.gravity.x, layout.gravity.y)
     val settings = world.getSettings
-    settings.setStepFrequency(Scenes.TimeStep)
-    settings.setVelocityConstraintSolverIterations(Scenes.Iterations)
-    settings.setPositionConstraintSolverIterations(Scenes.Iterations)
+    settings.setStepFrequency(layout.timeStep)
+    settings.setVelocityConstraintSolverIterations(Settings.Iterations)
+    settings.setPositionConstraintSolverIterations(Settings.Iterations)
     settings.setAtRestDetectionEnabled(false)
     settings.setContinuousDetectionMode(ContinuousDetectionMode.NONE)
-    val dynamic = scene match
-      case "pyramid-20" =>
-        staticBox(world, Scenes.Pyramid.ground)
-        val c = Scenes.Pyramid.centres
-        val side = 2 * Scenes.Pyramid.HalfSide
-        for i <- 0 until c.length / 2 yield
-          body(world, false, c(2 * i), c(2 * i + 1), Geometry.createRectangle(side, side))
-      case "chain-100" =>
-        val links = for i <- 0 until Scenes.Chain.Links yield
-          body(world, i == 0, Scenes.Chain.x(i), Scenes.Chain.y, Geometry.createCircle(Scenes.Chain.Radius),
-            collide = false)
-        for i <- 1 until links.length do
-          val a = links(i - 1)
-          val b = links(i)
-          world.addJoint(DistanceJoint[Body](a, b, a.getWorldCenter, b.getWorldCenter))
-        links.tail
-      case other =>
-        val n = Scenes.ballpitSize(other).getOrElse(throw IllegalArgumentException(s"$other is not a dyn4j scene"))
-        Scenes.Ballpit.container(n).foreach(staticBox(world, _))
-        val c = Scenes.Ballpit.centres(n)
-        for i <- 0 until n yield
-          body(world, false, c(2 * i), c(2 * i + 1), Geometry.createCircle(Scenes.Ballpit.Radius))
-    Built(world, dynamic)
+    val bodies = for spec <- layout.bodies yield
+      val body = Body()
+      // dyn4j wants a positive density even where the mass is infinite.
+      val fixture = body.addFixture(shape(spec.outline), spec.massDensity, spec.friction, spec.restitution)
+      if spec.noCollideGroup > 0 then fixture.setFilter(filter(spec.noCollideGroup))
+      body.setMass(if spec.fixed then MassType.INFINITE else MassType.NORMAL)
+      body.translate(spec.centre.x, spec.centre.y)
+      world.addBody(body)
+      body
+    for joint <- layout.joints do
+      val (a, b) = (bodies(joint.body1), bodies(joint.body2))
+      val distance = DistanceJoint[Body](a, b, a.getWorldCenter, b.getWorldCenter)
+      distance.setRestDistance(layout.length(joint))
+      world.addJoint(distance)
+    Built(world, layout.freeBodies.map(bodies))

@@ -1,15 +1,18 @@
 package sims.bench
 
-import org.jbox2d.collision.shapes.{CircleShape, PolygonShape, Shape as BoxShape}
+import org.jbox2d.collision.shapes.{CircleShape, PolygonShape, Shape as JShape}
 import org.jbox2d.common.Vec2
 import org.jbox2d.dynamics.{Body, BodyDef, BodyType, FixtureDef, World}
 import org.jbox2d.dynamics.joints.DistanceJointDef
+import sims.scenes.{Layout, Outline}
 
-/** The benchmark scenes in jBox2D (single precision, as the library is). */
-object JBox2DScenes:
-  private final class Built(val world: World, val dynamic: IndexedSeq[Body]) extends EngineScene:
-    private val dt = Scenes.TimeStep.toFloat
-    def step(): Unit = world.step(dt, Scenes.Iterations, Scenes.Iterations)
+/** Builds a layout in jBox2D (single precision, as the library is): body for body and joint
+  * for joint, with the bench's iterations and the peers' settings.
+  */
+object JBox2DBuilder:
+  private final class Built(val world: World, val dynamic: IndexedSeq[Body], timeStep: Double) extends EngineScene:
+    private val dt = timeStep.toFloat
+    def step(): Unit = world.step(dt, Settings.Iterations, Settings.Iterations)
     def dynamicStates: Array[Double] =
       dynamic.flatMap(b => Seq(b.getPosition.x.toDouble, b.getPosition.y.toDouble, b.getAngle.toDouble)).toArray
     def jointLengths: Array[Double] =
@@ -22,59 +25,40 @@ object JBox2DScenes:
         j = j.getNext
       out.result().reverse // jBox2D lists joints newest first
 
-  private def body(world: World, kind: BodyType, x: Double, y: Double, shape: BoxShape,
-      collide: Boolean = true): Body =
-    val definition = BodyDef()
-    definition.`type` = kind
-    definition.position.set(x.toFloat, y.toFloat)
-    val b = world.createBody(definition)
-    val fixture = FixtureDef()
-    fixture.shape = shape
-    fixture.density = Scenes.Density.toFloat
-    fixture.friction = Scenes.Friction.toFloat
-    fixture.restitution = Scenes.Restitution.toFloat
-    if !collide then fixture.filter.groupIndex = -1
-    b.createFixture(fixture)
-    b
+  private def shape(outline: Outline): JShape = outline match
+    case Outline.Circle(radius) =>
+      val c = CircleShape()
+      c.m_radius = radius.toFloat
+      c
+    case Outline.Box(halfWidth, halfHeight) =>
+      val p = PolygonShape()
+      p.setAsBox(halfWidth.toFloat, halfHeight.toFloat)
+      p
 
-  private def box(halfWidth: Double, halfHeight: Double): PolygonShape =
-    val p = PolygonShape()
-    p.setAsBox(halfWidth.toFloat, halfHeight.toFloat)
-    p
-
-  private def circle(radius: Double): CircleShape =
-    val c = CircleShape()
-    c.m_radius = radius.toFloat
-    c
-
-  private def staticBox(world: World, s: Scenes.StaticBox): Body =
-    body(world, BodyType.STATIC, s.x, s.y, box(s.halfWidth, s.halfHeight))
-
-  /** Builds the named scene. */
-  def build(scene: String): EngineScene =
-    val world = World(Vec2(0, Scenes.Gravity.toFloat))
+  /** Builds the layout. */
+  def build(layout: Layout): EngineScene =
+    val world = World(Vec2(layout.gravity.x.toFloat, layout.gravity.y.toFloat))
     world.setAllowSleep(false)
     world.setContinuousPhysics(false)
-    val dynamic = scene match
-      case "pyramid-20" =>
-        staticBox(world, Scenes.Pyramid.ground)
-        val c = Scenes.Pyramid.centres
-        for i <- 0 until c.length / 2 yield
-          body(world, BodyType.DYNAMIC, c(2 * i), c(2 * i + 1), box(Scenes.Pyramid.HalfSide, Scenes.Pyramid.HalfSide))
-      case "chain-100" =>
-        val links = for i <- 0 until Scenes.Chain.Links yield
-          body(world, if i == 0 then BodyType.STATIC else BodyType.DYNAMIC, Scenes.Chain.x(i), Scenes.Chain.y,
-            circle(Scenes.Chain.Radius), collide = false)
-        for i <- 1 until links.length do
-          val joint = DistanceJointDef()
-          joint.initialize(links(i - 1), links(i), links(i - 1).getPosition, links(i).getPosition)
-          joint.collideConnected = false
-          world.createJoint(joint)
-        links.tail
-      case other =>
-        val n = Scenes.ballpitSize(other).getOrElse(throw IllegalArgumentException(s"$other is not a jBox2D scene"))
-        Scenes.Ballpit.container(n).foreach(staticBox(world, _))
-        val c = Scenes.Ballpit.centres(n)
-        for i <- 0 until n yield
-          body(world, BodyType.DYNAMIC, c(2 * i), c(2 * i + 1), circle(Scenes.Ballpit.Radius))
-    Built(world, dynamic)
+    val bodies = for spec <- layout.bodies yield
+      val definition = BodyDef()
+      definition.`type` = if spec.fixed then BodyType.STATIC else BodyType.DYNAMIC
+      definition.position.set(spec.centre.x.toFloat, spec.centre.y.toFloat)
+      val body = world.createBody(definition)
+      val fixture = FixtureDef()
+      fixture.shape = shape(spec.outline)
+      fixture.density = spec.density.toFloat
+      fixture.friction = spec.friction.toFloat
+      fixture.restitution = spec.restitution.toFloat
+      // Shapes of one negative group index never collide with each other.
+      fixture.filter.groupIndex = -spec.noCollideGroup
+      body.createFixture(fixture)
+      body
+    for joint <- layout.joints do
+      val definition = DistanceJointDef()
+      definition.bodyA = bodies(joint.body1) // anchors at the body origins: the centres
+      definition.bodyB = bodies(joint.body2)
+      definition.length = layout.length(joint).toFloat
+      definition.collideConnected = false
+      world.createJoint(definition)
+    Built(world, layout.freeBodies.map(bodies), layout.timeStep)

@@ -10,5 +10,8 @@ object Scenes:
   /** The scene run when none is named. */
   val default: Scene = BallStack
 
-  /** The scene with this name, ignoring case, if there is one. */
-  def find(name: String): Option[Scene] = all.find(_.name.equalsIgnoreCase(name))
+  /** The scene with this name, ignoring case, if there is one: an example scene, else a
+    * benchmark scene ([[BenchScenes.find]]).
+    */
+  def find(name: String): Option[Scene] =
+    all.find(_.name.equalsIgnoreCase(name)).orElse(BenchScenes.find(name))
