@@ -11,7 +11,7 @@ object Scenes:
   val default: Scene = BallStack
 
   /** The scene with this name, ignoring case, if there is one: an example scene, else a
-    * benchmark scene ([[BenchScenes.find]]).
+    * benchmark scene ([[BenchScenes.find]]), else a test scene ([[TestScenes.find]]).
     */
   def find(name: String): Option[Scene] =
-    all.find(_.name.equalsIgnoreCase(name)).orElse(BenchScenes.find(name))
+    all.find(_.name.equalsIgnoreCase(name)).orElse(BenchScenes.find(name)).orElse(TestScenes.find(name))

@@ -2,32 +2,14 @@ package sims.robustness
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
-import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, World}
-import sims.dynamics.joints.{DistanceJoint, SpringJoint}
-import sims.geometry.Vector2D
-import sims.scenes.Scene
+import sims.dynamics.World
+import sims.scenes.TestScenes
 
 /** Same inputs, same outputs, bit for bit. */
 class DeterminismSpec extends AnyFunSuite with Matchers:
 
-  /** A mixed scene; `allocationOrder` permutes the order in which the bodies are created
-    * (and so their identity hash codes), never the order in which they join the world.
-    */
-  private def scene(allocationOrder: Seq[Int]): World =
-    val world = World()
-    val created = Array.ofDim[Body](12)
-    for i <- allocationOrder do
-      val shape = i % 3 match
-        case 0 => Circle(0.2 + 0.01 * i, 1)
-        case 1 => Rectangle(0.2, 0.15, 1)
-        case _ => RegularPolygon(5, 0.25, 1)
-      shape.pos = Vector2D(-1.5 + (i % 4) * 0.9 + 0.05 * (i / 4), 0.4 + (i / 4) * 0.7)
-      created(i) = shape.asBody
-    world += Scene.ground(3)
-    created.foreach(world += _)
-    world += DistanceJoint(created(0), created(0).pos, created(5), created(5).pos)
-    world += SpringJoint(created(1), created(2), 30)
-    world
+  /** The determinism scene, its bodies created in `allocationOrder`. */
+  private def scene(allocationOrder: Seq[Int]): World = TestScenes.Determinism(allocationOrder).build().world
 
   test("the same scene built twice gives bit-identical trajectories over 10,000 steps", sims.SlowTest) {
     val a = scene(0 until 12)
