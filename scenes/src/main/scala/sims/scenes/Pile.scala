@@ -4,7 +4,7 @@ import sims.dynamics.{Circle, Rectangle, RegularPolygon, Shape}
 import sims.geometry.Vector2D
 
 /** A large pile to show speed: circles, boxes, triangles and hexagons poured into a long
-  * container. Also the scene the benchmarks reuse.
+  * container.
   */
 object Pile extends Scene:
   /** Shapes per row. */
