@@ -22,17 +22,14 @@ final case class Ballpit(balls: Int) extends LayoutScene:
   def view: Region = Region(-HalfInner - 1, -1.5, HalfInner + 1, wallTop + 0.5)
 
   lazy val layout: Layout =
-    def wall(side: Double) = SceneBody(Outline.Box(WallHalfThickness, 0.5 * (wallTop - WallBottom)),
-      Vector2D(side * (HalfInner + WallHalfThickness), 0.5 * (wallTop + WallBottom)), fixed = true, 0,
-      Layout.StandardFriction, 0)
-    val floor = SceneBody(Outline.Box(HalfInner + 2 * WallHalfThickness, 0.5), Vector2D(0, -0.5), fixed = true, 0,
-      Layout.StandardFriction, 0)
+    def wall(side: Double) = SceneBody.box(Vector2D(side * (HalfInner + WallHalfThickness), 0.5 * (wallTop + WallBottom)),
+      WallHalfThickness, 0.5 * (wallTop - WallBottom), fixed = true)
+    val floor = SceneBody.box(Vector2D(0, -0.5), HalfInner + 2 * WallHalfThickness, 0.5, fixed = true)
     val random = java.util.Random(SeedBase + balls)
     val firstX = -0.5 * (PerRow - 1) * Pitch
     val grid = for i <- 0 until balls yield
       val jitter = (random.nextDouble() * 2 - 1) * MaxJitter
-      SceneBody(Outline.Circle(Radius), Vector2D(firstX + (i % PerRow) * Pitch + jitter, FirstRowY + (i / PerRow) * Pitch),
-        fixed = false, 1, Layout.StandardFriction, 0)
+      SceneBody.circle(Vector2D(firstX + (i % PerRow) * Pitch + jitter, FirstRowY + (i / PerRow) * Pitch), Radius)
     Layout(IndexedSeq(floor, wall(-1), wall(1)) ++ grid, IndexedSeq.empty, Layout.StandardGravity,
       Layout.StandardTimeStep, Region(-HalfInner, 0, HalfInner, wallTop))
 

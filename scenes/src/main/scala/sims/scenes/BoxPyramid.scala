@@ -18,12 +18,10 @@ final case class BoxPyramid(rows: Int) extends LayoutScene:
     Region(-halfWidth, -1, halfWidth, 2 * HalfSide * rows + 1)
 
   lazy val layout: Layout =
-    val ground = SceneBody(Outline.Box(GroundHalfWidth, 0.5), Vector2D(0, -0.5), fixed = true, 0,
-      Layout.StandardFriction, 0)
+    val ground = SceneBody.box(Vector2D(0, -0.5), GroundHalfWidth, 0.5, fixed = true)
     val boxes = for row <- 0 until rows; i <- 0 until rows - row yield
       val firstX = -0.5 * (rows - row - 1) * Pitch
-      SceneBody(Outline.Box(HalfSide, HalfSide), Vector2D(firstX + i * Pitch, HalfSide + 2 * HalfSide * row),
-        fixed = false, 1, Layout.StandardFriction, 0)
+      SceneBody.box(Vector2D(firstX + i * Pitch, HalfSide + 2 * HalfSide * row), HalfSide, HalfSide)
     Layout(ground +: boxes, IndexedSeq.empty, Layout.StandardGravity, Layout.StandardTimeStep,
       Region(-GroundHalfWidth, 0, GroundHalfWidth, 2 * HalfSide * rows + 1))
 

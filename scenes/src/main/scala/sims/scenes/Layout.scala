@@ -34,6 +34,21 @@ final case class SceneBody(outline: Outline, centre: Vector2D, fixed: Boolean, d
     */
   def massDensity: Double = if density > 0 then density else Layout.FixedBodyDensity
 
+/** Bodies of the standard material of the benchmark and golden scenes: friction 0.5,
+  * restitution 0, density 1 (0 when fixed), as the reference program's scene builder makes them.
+  */
+object SceneBody:
+  /** An axis-aligned box of the standard material. */
+  def box(centre: Vector2D, halfWidth: Double, halfHeight: Double, fixed: Boolean = false): SceneBody =
+    standard(Outline.Box(halfWidth, halfHeight), centre, fixed, 0)
+
+  /** A circle of the standard material, in no-collide group `noCollideGroup`. */
+  def circle(centre: Vector2D, radius: Double, fixed: Boolean = false, noCollideGroup: Int = 0): SceneBody =
+    standard(Outline.Circle(radius), centre, fixed, noCollideGroup)
+
+  private def standard(outline: Outline, centre: Vector2D, fixed: Boolean, group: Int): SceneBody =
+    SceneBody(outline, centre, fixed, if fixed then 0 else 1, Layout.StandardFriction, 0, group)
+
 /** A rigid distance joint holding the centres of the layout's bodies `body1` and `body2`
   * (indices into [[Layout.bodies]]) at their initial distance; the two never collide.
   */

@@ -20,8 +20,7 @@ final case class SwingingChain(links: Int) extends LayoutScene:
 
   lazy val layout: Layout =
     val circles = for i <- 0 until links yield
-      SceneBody(Outline.Circle(Radius), Vector2D(i * Pitch, 0), fixed = i == 0, if i == 0 then 0 else 1,
-        Layout.StandardFriction, 0, noCollideGroup = 1)
+      SceneBody.circle(Vector2D(i * Pitch, 0), Radius, fixed = i == 0, noCollideGroup = 1)
     Layout(circles, (1 until links).map(i => SceneJoint(i - 1, i)), Layout.StandardGravity, Layout.StandardTimeStep,
       Region(-1.5 * length, -1.5 * length, 1.5 * length, 1.5 * length))
 

@@ -32,11 +32,11 @@ object TestScenes:
 
     lazy val layout: Layout =
       def fixedBox(x: Double, y: Double, halfWidth: Double, halfHeight: Double) =
-        SceneBody(Outline.Box(halfWidth, halfHeight), Vector2D(x, y), fixed = true, 0, Layout.StandardFriction, 0)
+        SceneBody.box(Vector2D(x, y), halfWidth, halfHeight, fixed = true)
       val random = java.util.Random(7)
       val balls = for i <- 0 until Balls yield
         val centre = Vector2D(-2.2 + (i % 20) * 0.22 + (random.nextDouble() * 2 - 1) * 0.005, 0.12 + (i / 20) * 0.22)
-        SceneBody(Outline.Circle(0.1), centre, fixed = false, 1, Layout.StandardFriction, 0)
+        SceneBody.circle(centre, 0.1)
       Layout(IndexedSeq(fixedBox(0, -0.5, 3.5, 0.5), fixedBox(-2.75, 5, 0.5, 5), fixedBox(2.75, 5, 0.5, 5)) ++ balls,
         IndexedSeq.empty, Layout.StandardGravity, Layout.StandardTimeStep, Region(-2.25, 0, 2.25, 10))
 
