@@ -14,7 +14,7 @@ final case class Ballpit(balls: Int) extends LayoutScene:
   /** Rows of the initial grid. */
   val rows: Int = (balls + PerRow - 1) / PerRow
 
-  /** Height of the walls' top: the top of the grid's highest ball plus [[WallAboveGrid]], m. */
+  /** Height of the walls' top: the top of the grid's highest ball plus [[Ballpit.WallAboveGrid]], m. */
   val wallTop: Double = FirstRowY + (rows - 1) * Pitch + Radius + WallAboveGrid
 
   def name: String = s"ballpit-$balls"
