@@ -49,8 +49,7 @@ object Dyn4jBuilder:
     settings.setContinuousDetectionMode(ContinuousDetectionMode.NONE)
     val bodies = for spec <- layout.bodies yield
       val body = Body()
-      // dyn4j wants a positive density even where the mass is infinite.
-      val fixture = body.addFixture(shape(spec.outline), spec.massDensity, spec.friction, spec.restitution)
+      val fixture = body.addFixture(shape(spec.outline), spec.density, spec.friction, spec.restitution)
       if spec.noCollideGroup > 0 then fixture.setFilter(filter(spec.noCollideGroup))
       body.setMass(if spec.fixed then MassType.INFINITE else MassType.NORMAL)
       body.translate(spec.centre.x, spec.centre.y)

@@ -29,8 +29,8 @@ final case class SceneBody(outline: Outline, centre: Vector2D, fixed: Boolean, d
   require(friction >= 0 && restitution >= 0, s"friction $friction, restitution $restitution")
   require(noCollideGroup >= 0, s"no-collide group $noCollideGroup")
 
-  /** The density to give an engine that wants a positive one on every shape (SiMS, dyn4j):
-    * the body's own, or [[Layout.FixedBodyDensity]] for a fixed body without one.
+  /** The density to give an engine that wants a positive one on every shape (SiMS): the
+    * body's own, or [[Layout.FixedBodyDensity]] for a fixed body without one.
     */
   def massDensity: Double = if density > 0 then density else Layout.FixedBodyDensity
 
@@ -113,8 +113,8 @@ final case class Layout(bodies: IndexedSeq[SceneBody], joints: IndexedSeq[SceneJ
     shape
 
 object Layout:
-  /** Density given to the shapes of a fixed body of density 0 by engines that want a positive
-    * one; any value would do, since a fixed body's mass is never used.
+  /** Density given to the shapes of a fixed body of density 0 by an engine that wants a
+    * positive one; any value would do, since a fixed body's mass is never used.
     */
   val FixedBodyDensity: Double = 1.0
 
