@@ -16,7 +16,8 @@ lazy val testDependencies = Seq(
 
 /** The library: only the Scala standard library at run time. */
 lazy val root = (project in file("."))
-  .aggregate(LocalProject("examples"), LocalProject("docs"), LocalProject("bench")) // `./sbt test` builds and runs them too
+  // `./sbt test` builds and runs them too.
+  .aggregate(LocalProject("scenes"), LocalProject("examples"), LocalProject("docs"), LocalProject("bench"))
   .settings(
     name := "sims",
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
@@ -41,9 +42,22 @@ lazy val root = (project in file("."))
     coverageFailOnMinimum := true
   )
 
-/** Example scenes, headless runs and the viewer. */
+/** The one set of scenes (examples, benchmark and test scenes) the other projects build from,
+  * and the tests that need whole scenes. Root's own tests cannot use it (sbt forbids the
+  * cycle), so those tests live here; they see root's test helpers (`sims.SlowTest`, ...).
+  */
+lazy val scenes = (project in file("scenes"))
+  .dependsOn(root % "compile->compile;test->test")
+  .settings(
+    name := "sims-scenes",
+    publish / skip := true,
+    libraryDependencies ++= testDependencies,
+    Test / parallelExecution := false
+  )
+
+/** Headless runs, the renderer and the viewer of the scenes. */
 lazy val examples = (project in file("examples"))
-  .dependsOn(root)
+  .dependsOn(scenes)
   .settings(
     name := "sims-examples",
     publish / skip := true,
@@ -80,7 +94,7 @@ lazy val docs = (project in file("target/mdoc-project"))
 
 /** Benchmarks (JMH) of SiMS against jBox2D and dyn4j; the peers are bench-only dependencies. */
 lazy val bench = (project in file("bench"))
-  .dependsOn(root, examples) // the examples' BallStack scene is benchmarked as it is
+  .dependsOn(scenes)
   .enablePlugins(JmhPlugin)
   .settings(
     name := "sims-bench",
@@ -91,5 +105,7 @@ lazy val bench = (project in file("bench"))
     ),
     coverageEnabled := false,
     run / fork := true,
-    run / javaOptions ++= Seq("-Xmx2g")
+    run / javaOptions ++= Seq("-Xmx2g"),
+    // Tools' output as it is (no log prefix), e.g. to compare `Dump` with Box2D's dump.
+    run / outputStrategy := Some(StdoutOutput)
   )

@@ -30,10 +30,10 @@ object Phases:
         case "--rounds" => rounds = it.next().toInt
         case scene => scenes += scene
     val chosen = scenes.result()
-    if chosen.isEmpty then println("usage: Phases [--reps N] [--rounds N] scene...; scenes: " + Scenes.names.mkString(" "))
+    if chosen.isEmpty then println("usage: Phases [--reps N] [--rounds N] scene...; scenes: " + Settings.names.mkString(" "))
     for scene <- chosen do
-      val world = SimsScenes.buildWorld(scene)
-      for _ <- 0 until Scenes.WarmUpSteps do world.step()
+      val world = SimsBuilder.world(Settings.scene(scene))
+      for _ <- 0 until Settings.WarmUpSteps do world.step()
       val state = world.snapshot()
       def best(body: => Unit): Double =
         var fastest = Double.PositiveInfinity

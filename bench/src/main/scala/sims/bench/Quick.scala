@@ -17,12 +17,12 @@ object Quick:
         case "--engine" => engines = Seq(Engine.named(it.next()))
         case scene => scenes += scene
     val chosen = Some(scenes.result()).filter(_.nonEmpty)
-      .getOrElse(Scenes.names.filterNot(n => n == "ballpit-8000" || n == "ballpit-16000"))
-    for scene <- chosen; engine <- Engine.forScene(scene) if engines.contains(engine) do
+      .getOrElse(Settings.names.filterNot(n => n == "ballpit-8000" || n == "ballpit-16000"))
+    for name <- chosen; scene = Settings.scene(name); engine <- Engine.forScene(scene) if engines.contains(engine) do
       val built = engine.build(scene)
-      for _ <- 0 until Scenes.WarmUpSteps do built.step()
+      for _ <- 0 until Settings.WarmUpSteps do built.step()
       val start = System.nanoTime()
       for _ <- 0 until steps do built.step()
       val ms = (System.nanoTime() - start) / 1e6 / steps
       val sanity = Sanity.check(scene, built)
-      println(f"$scene%-14s ${engine.label}%-7s $ms%9.3f ms/step  sane=${sanity.ok}%-5s ${sanity.detail}")
+      println(f"$name%-14s ${engine.label}%-7s $ms%9.3f ms/step  sane=${sanity.ok}%-5s ${sanity.detail}")

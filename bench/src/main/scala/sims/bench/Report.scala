@@ -15,7 +15,7 @@ object Report:
     sb ++= s"# Step time, SiMS vs jBox2D 2.2.1.1 vs dyn4j 5.0.2 ($date)\n\n"
     sb ++= s"Machine: ${runtime.availableProcessors} cores, ${System.getProperty("os.name")} ${System.getProperty("os.arch")}, " +
       s"Java ${System.getProperty("java.version")} (${System.getProperty("java.vm.name")}).\n"
-    sb ++= s"JMH: average time per step after ${Scenes.WarmUpSteps} warm-up steps, $forks fork(s), " +
+    sb ++= s"JMH: average time per step after ${Settings.WarmUpSteps} warm-up steps, $forks fork(s), " +
       s"$warmup x 1 s warm-up and $iterations x 1 s measurement iterations, GC profiler; " +
       f"all engines in one run ($minutes%.1f min).\n"
     sb ++= "Settings: gravity (0, -9.81), dt 1/60, 10 velocity and 10 position iterations, friction 0.5, " +

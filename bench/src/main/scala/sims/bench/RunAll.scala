@@ -36,14 +36,16 @@ object RunAll:
         case scene => scenes += scene
     // Cheap scenes first, so an interrupted run still has them.
     val chosen = Some(scenes.result()).filter(_.nonEmpty)
-      .getOrElse(Scenes.names.sortBy(n => Scenes.ballpitSize(n).getOrElse(0)))
+      .getOrElse(Settings.names.sortBy(n => Settings.scene(n) match
+        case pit: sims.scenes.Ballpit => pit.balls
+        case _ => 0))
     val sanityFile = Files.createTempFile("sims-bench-sanity", ".tsv")
     val started = System.nanoTime()
     val results = chosen.flatMap { scene =>
       val options = OptionsBuilder()
         .include(classOf[StepBenchmark].getName + ".step$")
         .param("scene", scene)
-        .param("engine", Engine.forScene(scene).map(_.label)*)
+        .param("engine", Engine.forScene(Settings.scene(scene)).map(_.label)*)
         .forks(forks)
         .warmupIterations(warmup).warmupTime(TimeValue.seconds(1))
         .measurementIterations(iterations).measurementTime(TimeValue.seconds(1))

@@ -1,7 +1,10 @@
 package sims.bench
 
+import sims.scenes.{BallStack, Ballpit, BoxPyramid, Layout, Outline, Region, Scene, SwingingChain}
+
 /** Checks that a scene still looks like what it should after a run, with the same criteria
-  * for every engine, so that a fast wrong answer cannot win.
+  * for every engine, so that a fast wrong answer cannot win. Containers, initial positions and
+  * joint lengths come from the scene itself.
   */
 object Sanity:
   /** Outcome of a check: whether it passed and what was measured. */
@@ -19,49 +22,55 @@ object Sanity:
     */
   val ChainStretch: Double = 0.25
 
-  /** Checks the named scene. */
-  def check(scene: String, built: EngineScene): Result =
+  /** Checks the scene; a scene without criteria of its own is only checked for NaN. */
+  def check(scene: Scene, built: EngineScene): Result =
     val states = built.dynamicStates
     if states.exists(d => d.isNaN || d.isInfinite) then Result(false, "NaN or infinite body state")
     else scene match
-      case "pyramid-20" => pyramid(states)
-      case "chain-100" => chain(built.jointLengths)
-      case "ballstack" =>
-        inBox(states, Scenes.BallStack.Radius, Scenes.BallStack.HalfWidth, Scenes.BallStack.Height)
-      case other =>
-        val n = Scenes.ballpitSize(other).get
-        inBox(states, Scenes.Ballpit.Radius, Scenes.Ballpit.HalfWidth, Scenes.Ballpit.wallHeight(n))
+      case pyramid: BoxPyramid => standing(states, pyramid.layout)
+      case chain: SwingingChain => joined(built.jointLengths, chain.layout)
+      case pit: Ballpit =>
+        val radii = pit.layout.freeBodies.map(i => pit.layout.bodies(i).outline match
+          case Outline.Circle(radius) => radius
+          case Outline.Box(halfWidth, halfHeight) => math.hypot(halfWidth, halfHeight))
+        contained(states, radii, pit.layout.bounds)
+      case BallStack => contained(states, IndexedSeq.fill(states.length / 3)(BallStack.Radius), BallStack.Inside)
+      case _ => Result(true, "finite")
 
-  /** Every ball within the walls (|x| <= halfWidth - r) and above the floor (y >= r). */
-  private def inBox(states: Array[Double], radius: Double, halfWidth: Double, height: Double): Result =
+  /** Every ball within the walls and above the floor of `inside` (its top is not checked). */
+  private def contained(states: Array[Double], radii: IndexedSeq[Double], inside: Region): Result =
     var outside = 0
     var lowest = Double.PositiveInfinity
     var widest = 0.0
     var i = 0
-    while i < states.length do
-      val x = states(i)
-      val y = states(i + 1)
+    while i < states.length / 3 do
+      val x = states(3 * i)
+      val y = states(3 * i + 1)
+      val radius = radii(i)
       lowest = math.min(lowest, y - radius)
       widest = math.max(widest, math.abs(x) + radius)
-      if math.abs(x) + radius > halfWidth + ContainerTolerance || y - radius < -ContainerTolerance then outside += 1
-      i += 3
+      if x - radius < inside.minX - ContainerTolerance || x + radius > inside.maxX + ContainerTolerance ||
+        y - radius < inside.minY - ContainerTolerance
+      then outside += 1
+      i += 1
     Result(outside == 0, f"$outside%d outside; lowest ball bottom $lowest%.3f m, widest |x|+r $widest%.3f m")
 
   /** Every box within [[PyramidDrift]] of where it started and turned by at most [[PyramidTilt]]. */
-  private def pyramid(states: Array[Double]): Result =
-    val initial = Scenes.Pyramid.centres
+  private def standing(states: Array[Double], layout: Layout): Result =
+    val initial = layout.freeBodies.map(layout.bodies(_).centre)
     var drift = 0.0
     var tilt = 0.0
     var i = 0
-    while i < initial.length / 2 do
-      drift = math.max(drift, math.hypot(states(3 * i) - initial(2 * i), states(3 * i + 1) - initial(2 * i + 1)))
+    while i < initial.length do
+      drift = math.max(drift, math.hypot(states(3 * i) - initial(i).x, states(3 * i + 1) - initial(i).y))
       tilt = math.max(tilt, math.abs(math.IEEEremainder(states(3 * i + 2), math.Pi / 2)))
       i += 1
     Result(drift <= PyramidDrift && tilt <= PyramidTilt, f"largest drift $drift%.3f m, largest tilt $tilt%.3f rad")
 
   /** Every joint within [[ChainStretch]] of its length. */
-  private def chain(lengths: Array[Double]): Result =
-    val worst = lengths.map(l => math.abs(l - Scenes.Chain.Spacing)).max
-    val total = lengths.sum
-    Result(worst <= ChainStretch * Scenes.Chain.Spacing,
-      f"largest joint error ${worst * 1000}%.1f mm, chain length $total%.2f m (rest ${Scenes.Chain.Spacing * lengths.length}%.2f m)")
+  private def joined(lengths: Array[Double], layout: Layout): Result =
+    val rest = layout.joints.map(layout.length)
+    val worst = lengths.indices.map(i => math.abs(lengths(i) - rest(i)) / rest(i)).max
+    val largest = lengths.indices.map(i => math.abs(lengths(i) - rest(i))).max
+    Result(worst <= ChainStretch,
+      f"largest joint error ${largest * 1000}%.1f mm, chain length ${lengths.sum}%.2f m (rest ${rest.sum}%.2f m)")

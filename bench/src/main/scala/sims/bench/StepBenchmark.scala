@@ -4,7 +4,7 @@ import java.util.concurrent.TimeUnit
 import org.openjdk.jmh.annotations.*
 import scala.compiletime.uninitialized
 
-/** Time of one step of a scene in one engine, after [[Scenes.WarmUpSteps]] steps. The scene is
+/** Time of one step of a scene in one engine, after [[Settings.WarmUpSteps]] steps. The scene is
   * built once per fork and keeps running through warm-up and measurement; when the fork exits,
   * its sanity is checked and appended to the file named by the `sims.bench.sanity` property.
   */
@@ -16,7 +16,7 @@ class StepBenchmark:
   @Param(Array("SiMS"))
   var engine: String = uninitialized
 
-  /** Scene name, one of [[Scenes.names]]. */
+  /** Scene name, one of [[Settings.names]] (or any of `sims.scenes.Scenes.find`, in SiMS). */
   @Param(Array("ballpit-500"))
   var scene: String = uninitialized
 
@@ -26,12 +26,12 @@ class StepBenchmark:
   /** Builds the scene and runs the warm-up steps. */
   @Setup(Level.Trial)
   def setup(): Unit =
-    built = Engine.named(engine).build(scene)
+    built = Engine.named(engine).build(Settings.scene(scene))
     var i = 0
-    while i < Scenes.WarmUpSteps do
+    while i < Settings.WarmUpSteps do
       built.step()
       i += 1
-    steps = Scenes.WarmUpSteps
+    steps = Settings.WarmUpSteps
 
   /** One step. */
   @Benchmark
@@ -48,7 +48,7 @@ class StepBenchmark:
     Runtime.getRuntime.addShutdownHook(Thread(() => checkSanity()))
 
   private def checkSanity(): Unit =
-    val result = Sanity.check(scene, built)
+    val result = Sanity.check(Settings.scene(scene), built)
     val line = s"$engine\t$scene\t${result.ok}\t$steps\t${result.detail}\n"
     Option(System.getProperty("sims.bench.sanity")) match
       case Some(file) =>

@@ -2,7 +2,7 @@ package sims.examples
 
 import java.io.File
 import sims.examples.headless.HeadlessRun
-import sims.examples.scenes.{Scene, Scenes}
+import sims.scenes.{Scene, Scenes}
 
 /** Command line of the examples: `[Scene] [--seconds S] [--out DIR]` runs a scene headless,
   * `--gui [Scene]` opens the viewer, `--list` lists the scenes.

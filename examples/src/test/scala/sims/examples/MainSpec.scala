@@ -26,4 +26,4 @@ class MainSpec extends AnyFunSuite:
     assert(parse(Seq("Chain", "Cup")).isLeft)
 
   test("the listing names every scene"):
-    for s <- scenes.Scenes.all do assert(Main.listing.contains(s.name))
+    for s <- sims.scenes.Scenes.all do assert(Main.listing.contains(s.name))

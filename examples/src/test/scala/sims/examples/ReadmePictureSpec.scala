@@ -5,7 +5,7 @@ import java.nio.file.Files
 import javax.imageio.ImageIO
 import org.scalatest.funsuite.AnyFunSuite
 import sims.examples.headless.HeadlessRun
-import sims.examples.scenes.BallStack
+import sims.scenes.BallStack
 
 /** The README's picture is what the main job makes: `examples/run BallStack --seconds 3`. */
 class ReadmePictureSpec extends AnyFunSuite:

@@ -3,7 +3,7 @@ package sims.examples.headless
 import java.io.{File, PrintStream}
 import javax.imageio.ImageIO
 import sims.examples.render.{GifWriter, RenderOptions, Renderer, Viewport}
-import sims.examples.scenes.Scene
+import sims.scenes.Scene
 
 /** Runs a scene without a window and writes what happened: an animated GIF, a PNG of the
   * last frame and a CSV of every body's state.

@@ -1,6 +1,6 @@
 package sims.examples.render
 
-import sims.examples.scenes.Region
+import sims.scenes.Region
 import sims.geometry.Vector2D
 
 /** The world-to-pixel transform of a picture `width` x `height` pixels: world point `centre`

@@ -5,7 +5,7 @@ import java.awt.event.{MouseAdapter, MouseEvent, MouseWheelEvent}
 import javax.swing.JPanel
 import sims.examples.render.{RenderOptions, Renderer, Viewport}
 import sims.dynamics.joints.MouseJoint
-import sims.examples.scenes.{Scene, Staged}
+import sims.scenes.{Scene, Staged}
 
 /** The viewer's drawing area: owns the running scene, steps it on request and paints it with
   * the shared [[sims.examples.render.Renderer]]. Dragging a free body pulls it with a

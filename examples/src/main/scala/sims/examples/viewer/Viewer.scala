@@ -3,7 +3,7 @@ package sims.examples.viewer
 import java.awt.{BorderLayout, Font}
 import java.awt.event.ActionEvent
 import javax.swing.{BorderFactory, BoxLayout, JButton, JCheckBox, JComboBox, JFrame, JPanel, JTextArea, SwingUtilities, Timer, WindowConstants}
-import sims.examples.scenes.{Scene, Scenes}
+import sims.scenes.{Scene, Scenes}
 
 /** The interactive viewer: a scene chooser, start / stop / step / reset, the scene's action,
   * overlay toggles and an info panel around a [[SimulationPanel]].

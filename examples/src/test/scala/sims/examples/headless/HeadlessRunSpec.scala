@@ -4,7 +4,7 @@ import java.io.{ByteArrayOutputStream, PrintStream}
 import java.nio.file.Files
 import javax.imageio.ImageIO
 import org.scalatest.funsuite.AnyFunSuite
-import sims.examples.scenes.Spring
+import sims.scenes.Spring
 
 /** The main job's files: GIF, PNG and CSV of a short run, and the progress bar's two modes. */
 class HeadlessRunSpec extends AnyFunSuite:

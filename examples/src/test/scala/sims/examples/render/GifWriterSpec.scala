@@ -43,7 +43,7 @@ class GifWriterSpec extends AnyFunSuite:
   test("with a palette, the renderer's unsmoothed pictures are stored exactly"):
     val file = Files.createTempFile("sims-gif", ".gif").toFile
     file.deleteOnExit()
-    val scene = sims.examples.scenes.BallStack
+    val scene = sims.scenes.BallStack
     val world = scene.build().world
     val picture = Renderer.image(world, Viewport.fit(scene.view, 120, 90), RenderOptions(smooth = false, caption = "x"))
     val gif = GifWriter(file, 40, Renderer.colours)
@@ -55,7 +55,7 @@ class GifWriterSpec extends AnyFunSuite:
   test("with a palette, later frames store only what changed, and compose back to the pictures"):
     val file = Files.createTempFile("sims-gif", ".gif").toFile
     file.deleteOnExit()
-    val scene = sims.examples.scenes.Cannon
+    val scene = sims.scenes.Cannon
     val world = scene.build().world
     val viewport = Viewport.fit(scene.view, 160, 120)
     def picture() = Renderer.image(world, viewport, RenderOptions(smooth = false))

@@ -4,7 +4,7 @@ import java.awt.Color
 import java.awt.image.BufferedImage
 import org.scalatest.funsuite.AnyFunSuite
 import sims.dynamics.World
-import sims.examples.scenes.{Region, Scene}
+import sims.scenes.{Region, Scene}
 import sims.geometry.Vector2D
 
 /** The renderer draws a known scene; pixels are checked where things are and where they are not. */
@@ -63,7 +63,7 @@ class RendererSpec extends AnyFunSuite:
     assert(onBox != Renderer.Background && colourAt(Renderer.image(world, viewport), 1, 3.5) == Renderer.Background)
 
   test("every scene renders without error at its own view"):
-    for scene <- sims.examples.scenes.Scenes.all do
+    for scene <- sims.scenes.Scenes.all do
       val world = scene.build().world
       val image = Renderer.image(world, Viewport.fit(scene.view, 160, 120),
         RenderOptions(contacts = true, boxes = true, grid = true, caption = scene.name))

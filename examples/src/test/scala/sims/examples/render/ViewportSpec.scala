@@ -1,7 +1,7 @@
 package sims.examples.render
 
 import org.scalatest.funsuite.AnyFunSuite
-import sims.examples.scenes.Region
+import sims.scenes.Region
 import sims.geometry.Vector2D
 
 /** The world-to-pixel transform. */

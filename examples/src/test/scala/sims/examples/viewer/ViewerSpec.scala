@@ -4,7 +4,7 @@ import java.awt.Color
 import java.awt.image.BufferedImage
 import org.scalatest.funsuite.AnyFunSuite
 import sims.examples.render.Renderer
-import sims.examples.scenes.{BallStack, Cannon, Scenes}
+import sims.scenes.{BallStack, Cannon, Scenes}
 
 /** The viewer's panels work without a display: they paint off-screen and respond to controls. */
 class ViewerSpec extends AnyFunSuite:
@@ -61,7 +61,7 @@ class ViewerSpec extends AnyFunSuite:
     assert(panel.viewport.centre.x < centre.x)
 
   test("dragging a body with the mouse lifts it; empty space grabs nothing"):
-    val panel = SimulationPanel(sims.examples.scenes.Stacking)
+    val panel = SimulationPanel(sims.scenes.Stacking)
     panel.setSize(600, 450)
     val image = BufferedImage(600, 450, BufferedImage.TYPE_INT_RGB)
     panel.paint(image.createGraphics()) // sizes the view to the panel

@@ -1,0 +1,27 @@
+package sims.scenes
+
+/** The benchmark scenes: `ballpit-N`, `pyramid-R` and `chain-N` for any size, laid out as
+  * [[Layout]]s that every engine of the bench builds, and `ballstack` (SiMS only), the
+  * examples' [[BallStack]].
+  */
+object BenchScenes:
+  /** The ball pits benchmarked. */
+  val BallpitSizes: Seq[Int] = Seq(500, 1000, 2000, 4000, 8000, 16000)
+
+  /** The scenes benchmarked, in the order of the bench's reports. */
+  val standard: Seq[Scene] = BallpitSizes.map(Ballpit(_)) ++ Seq(BoxPyramid(20), SwingingChain(100), BallStack)
+
+  /** The bench's names of the standard scenes: their names in lower case. */
+  val names: Seq[String] = standard.map(_.name.toLowerCase)
+
+  private val Family = "(ballpit|pyramid|chain)-([0-9]{1,6})".r
+
+  /** The benchmark scene with this name, ignoring case: `ballpit-N`, `pyramid-R`, `chain-N`
+    * for any size they accept, or `ballstack`.
+    */
+  def find(name: String): Option[Scene] = name.toLowerCase match
+    case Family("ballpit", n) if n.toInt > 0 => Some(Ballpit(n.toInt))
+    case Family("pyramid", n) if n.toInt > 0 => Some(BoxPyramid(n.toInt))
+    case Family("chain", n) if n.toInt > 1 => Some(SwingingChain(n.toInt))
+    case "ballstack" => Some(BallStack)
+    case _ => None

@@ -1,0 +1,72 @@
+package sims.scenes
+
+import org.scalatest.funsuite.AnyFunSuite
+import org.scalatest.matchers.should.Matchers
+
+/** The benchmark scenes: found by name, laid out as the Box2D v3 reference program lays them
+  * out (the bench's `Dump` compares every number; these tests hold the shape of each layout).
+  */
+class BenchScenesSpec extends AnyFunSuite with Matchers:
+
+  test("the standard scenes keep the bench's names and order") {
+    BenchScenes.names shouldBe Seq("ballpit-500", "ballpit-1000", "ballpit-2000", "ballpit-4000", "ballpit-8000",
+      "ballpit-16000", "pyramid-20", "chain-100", "ballstack")
+  }
+
+  test("families are found by name for any size, ignoring case, and nothing else is") {
+    BenchScenes.find("ballpit-123") shouldBe Some(Ballpit(123))
+    BenchScenes.find("Pyramid-3") shouldBe Some(BoxPyramid(3))
+    BenchScenes.find("chain-2") shouldBe Some(SwingingChain(2))
+    BenchScenes.find("ballstack") shouldBe Some(BallStack)
+    for name <- Seq("ballpit-0", "chain-1", "pyramid-", "pyramid-x", "ballpit-500x", "ballpit--5", "Chain") do
+      withClue(name)(BenchScenes.find(name) shouldBe None)
+    for name <- BenchScenes.names do Scenes.find(name).map(_.name.toLowerCase) shouldBe Some(name)
+  }
+
+  test("ballpit-N: a fixed floor and two walls, then N balls 45 to a row inside the walls") {
+    val pit = Ballpit(500)
+    val layout = pit.layout
+    layout.bodies.size shouldBe 503
+    layout.bodies.take(3).map(_.fixed) shouldBe Seq(true, true, true)
+    layout.freeBodies shouldBe (3 until 503)
+    val walls = layout.bodies.slice(1, 3).map(b => b.outline match
+      case Outline.Box(halfWidth, halfHeight) => (b.centre.x, halfWidth, b.centre.y - halfHeight, b.centre.y + halfHeight)
+      case other => fail(s"a wall is $other"))
+    walls.map(w => math.abs(w._1) - w._2) shouldBe Seq(5.0, 5.0) // inner faces at x = -5 and 5
+    walls.map(_._3).foreach(_ shouldBe -1.0 +- 1e-12)
+    walls.map(_._4).foreach(_ shouldBe pit.wallTop +- 1e-12)
+    pit.wallTop shouldBe (0.12 + 11 * 0.22 + 0.1 + 1.0) +- 1e-12 // 12 rows
+    for i <- layout.freeBodies do
+      val ball = layout.bodies(i)
+      val column = (i - 3) % 45
+      ball.centre.x shouldBe (-4.84 + column * 0.22) +- 0.005
+      layout.bounds.contains(ball.centre) shouldBe true
+    layout.bounds shouldBe Region(-5, 0, 5, pit.wallTop)
+  }
+
+  test("the ball pit's shifts are drawn from its own seed: other sizes start with other shifts") {
+    Ballpit(500).layout.bodies(3).centre should not equal Ballpit(1000).layout.bodies(3).centre
+    Ballpit(500).layout shouldBe Ballpit(500).layout
+  }
+
+  test("pyramid-R: the ground and R rows of boxes, each row resting on the one below") {
+    val layout = BoxPyramid(20).layout
+    layout.bodies.size shouldBe 1 + 210
+    layout.bodies.head.fixed shouldBe true
+    layout.bodies.tail.map(_.centre.y).distinct shouldBe (0 until 20).map(0.25 + 0.5 * _)
+    layout.bodies(1).centre.x shouldBe -19 * 0.5625 / 2
+  }
+
+  test("chain-N: N links on the x axis from the origin, the first fixed, joined neighbour to neighbour") {
+    val layout = SwingingChain(100).layout
+    layout.bodies.size shouldBe 100
+    layout.bodies.map(_.fixed) shouldBe (true +: Seq.fill(99)(false))
+    layout.bodies.map(_.noCollideGroup).distinct shouldBe Seq(1)
+    layout.joints shouldBe (1 until 100).map(i => SceneJoint(i - 1, i))
+    layout.joints.foreach(j => layout.length(j) shouldBe 0.2 +- 1e-12)
+  }
+
+  test("every standard scene builds a SiMS world with the layout's bodies") {
+    for case scene: LayoutScene <- BenchScenes.standard.filterNot(_.name == "ballpit-16000") do
+      scene.build().world.bodies.size shouldBe scene.layout.bodies.size
+  }
