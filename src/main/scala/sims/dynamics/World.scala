@@ -2,10 +2,10 @@ package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
-import sims.collision.{Collision, Detector, GridDetector}
+import sims.collision.{Collision, Contact, Detector, GridDetector}
 import sims.dynamics.joints.Joint
 import sims.geometry.Vector2D
-import sims.solver.{ClassicStep, Solver}
+import sims.solver.{CarriedState, ClassicStep, Solver}
 
 /** A world of bodies and joints, stepped in time by `step()` (documentation chapters 3 and 4).
   *
@@ -103,6 +103,12 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     */
   def collisions: collection.IndexedSeq[Collision] = detector.collisions
 
+  /** The contacts of the last step as its solver saw them (for either step: the classic
+    * step's collisions, the soft step's manifolds with their impulses), as copies that stay
+    * valid.
+    */
+  def contacts: IndexedSeq[Contact] = _solver.contacts(this)
+
   /** Adds a body; fails if it is already in this or another world. */
   def +=(body: Body): this.type =
     if body == null then throw IllegalArgumentException("body must not be null")
@@ -156,7 +162,8 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     */
   def step(): Unit =
     checkJoints()
-    beforeStep.save(this)
+    beforeStep.save(this, withSolvers = false)
+    startSolverStep()
     _solver.step(this)
     postStep()
 
@@ -190,6 +197,32 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       workspaces += made
       made
 
+  /** The solvers' data that steps hand on (see [[sims.solver.CarriedState]]), in the order the
+    * world made them.
+    */
+  private[sims] def carriedStates: collection.IndexedSeq[CarriedState] =
+    workspaces.collect { case c: CarriedState => c }
+
+  private def startSolverStep(): Unit =
+    var i = 0
+    while i < workspaces.length do
+      workspaces(i) match
+        case c: CarriedState => c.beginStep()
+        case _ => ()
+      i += 1
+
+  /** Puts the world back as it was before the step under way: bodies, time, joints' impulses and
+    * the solvers' carried data.
+    */
+  private def undoStep(): Unit =
+    beforeStep.load(this)
+    var i = 0
+    while i < workspaces.length do
+      workspaces(i) match
+        case c: CarriedState => c.undoStep()
+        case _ => ()
+      i += 1
+
   private def checkJoints(): Unit =
     var i = 0
     while i < jointBuffer.length do
@@ -211,7 +244,7 @@ class World(makeDetector: World => Detector = GridDetector(_)):
         case Checked.Positions => finite(b.x) && finite(b.y) && finite(b.angle)
       if !ok then
         val message = s"non-finite ${checked.quantity} of body $i ($b) in phase '$phase'; the world was restored to its state before the step"
-        beforeStep.load(this)
+        undoStep()
         throw ArithmeticException(message)
       i += 1
 

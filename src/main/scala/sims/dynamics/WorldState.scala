@@ -1,17 +1,30 @@
 package sims.dynamics
 
-/** The dynamic state of a world: time and, for every body, position, rotation, velocities,
-  * force and torque. Restoring it and stepping again replays the run bit for bit.
+/** The dynamic state of a world: time; for every body, position, rotation, velocities, force
+  * and torque; the impulses each joint carries from step to step (the soft step's warm start);
+  * and what the solvers carry from step to step (the soft step's contact table). Restoring it
+  * and stepping again replays the run bit for bit.
   */
 final class WorldState private ():
   private var bodies = Array.empty[Body]
   private var values = Array.empty[Double]
   private var time = 0.0
+  private var joints = Array.empty[sims.dynamics.joints.Joint]
+  private var jointImpulses = Array.empty[Double]
+  // For a snapshot: the solvers' carried states, by workspace (null for a step's own save).
+  private var carried: Array[AnyRef] = null
 
   /** Simulated time when the state was taken. */
   def timeOfState: Double = time
 
-  private[sims] def save(world: World): Unit =
+  /** Saves the state; with `withSolvers`, copies of what the solvers carry too (a step's own
+    * save leaves those to `CarriedState.beginStep`, which copies nothing).
+    */
+  private[sims] def save(world: World, withSolvers: Boolean = true): Unit =
+    saveJoints(world)
+    carried =
+      if !withSolvers then null
+      else world.carriedStates.map(_.copyState()).toArray
     val bs = world.bodies
     if bodies.length != bs.length then
       bodies = new Array[Body](bs.length)
@@ -31,6 +44,17 @@ final class WorldState private ():
     val bs = world.bodies
     if bs.length != bodies.length || bs.indices.exists(i => bs(i) ne bodies(i)) then
       throw IllegalArgumentException("state was taken of a world with other bodies")
+    val js = world.joints
+    if js.length != joints.length || js.indices.exists(i => js(i) ne joints(i)) then
+      throw IllegalArgumentException("state was taken of a world with other joints")
+    loadJoints()
+    if carried != null then
+      // Solvers the world took up after the snapshot start again from nothing.
+      val states = world.carriedStates
+      var k = 0
+      while k < states.length do
+        states(k).restoreState(if k < carried.length then carried(k) else null)
+        k += 1
     world.time = time
     var i = 0
     while i < bodies.length do
@@ -40,6 +64,33 @@ final class WorldState private ():
       b.vx = values(k + 3); b.vy = values(k + 4); b.w = values(k + 5)
       b.fx = values(k + 6); b.fy = values(k + 7); b.tau = values(k + 8)
       b.placeShapes()
+      i += 1
+
+  private def saveJoints(world: World): Unit =
+    val js = world.jointList
+    if joints.length != js.length then joints = new Array(js.length)
+    var total = 0
+    var i = 0
+    while i < js.length do
+      joints(i) = js(i)
+      total += js(i).softImpulse.length
+      i += 1
+    if jointImpulses.length < total then jointImpulses = new Array[Double](total)
+    var k = 0
+    i = 0
+    while i < js.length do
+      val impulse = js(i).softImpulse
+      System.arraycopy(impulse, 0, jointImpulses, k, impulse.length)
+      k += impulse.length
+      i += 1
+
+  private def loadJoints(): Unit =
+    var k = 0
+    var i = 0
+    while i < joints.length do
+      val impulse = joints(i).softImpulse
+      System.arraycopy(jointImpulses, k, impulse, 0, impulse.length)
+      k += impulse.length
       i += 1
 
 private[sims] object WorldState:

@@ -1,6 +1,7 @@
 package sims.solver
 
 import sims.Defaults
+import sims.collision.{Collision, Contact}
 import sims.dynamics.{Checked, World}
 import sims.dynamics.joints.ForceJoint
 
@@ -37,6 +38,17 @@ object ClassicStep extends Solver:
       world.guard("position correction", Checked.Positions)
 
   override def toString: String = "ClassicStep"
+
+  /** The detector's collisions after the last position correction: each point with the
+    * separation -overlap of the shapes along the normal, impulses 0 (the classic step keeps none).
+    */
+  def contacts(world: World): IndexedSeq[Contact] =
+    world.detector.collisions.iterator.map { c =>
+      val points = c.points.toIndexedSeq
+      val separation = -Collision.overlapAlong(c.shape1, c.shape2, c.normal.x, c.normal.y)
+      val zeros = IndexedSeq.fill(points.length)(0.0)
+      Contact(c.shape1, c.shape2, c.normal, points, IndexedSeq.fill(points.length)(separation), zeros, zeros)
+    }.toIndexedSeq
 
   private def advanceTime(world: World, h: Double): Unit = world.time = world.time + h
 

@@ -1,6 +1,7 @@
 package sims.solver
 
 import sims.Defaults
+import sims.collision.Contact
 import sims.dynamics.{Checked, World}
 import sims.solver.soft.{ContactConstraints, SoftBodies, SoftWorkspace}
 
@@ -84,6 +85,12 @@ final case class SoftStep(
       substep += 1
     applyRestitution(workspace)
     finish(world, workspace)
+
+  /** The contacts of the last soft step, speculative ones included: points where they are after
+    * the step, separations after the step's motion.
+    */
+  def contacts(world: World): IndexedSeq[Contact] =
+    world.workspace(classOf[SoftWorkspace], SoftWorkspace()).contactViews()
 
   private def advanceTime(world: World): Unit = world.time = world.time + world.timeStep
 

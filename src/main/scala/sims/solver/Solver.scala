@@ -1,5 +1,6 @@
 package sims.solver
 
+import sims.collision.Contact
 import sims.dynamics.World
 
 /** What a world's `step()` runs: the stages of one time step, in order.
@@ -14,3 +15,6 @@ import sims.dynamics.World
 trait Solver:
   /** Advances `world` by one `world.timeStep`. */
   def step(world: World): Unit
+
+  /** The contacts of `world`'s last step with this solver, as copies. */
+  def contacts(world: World): IndexedSeq[Contact]

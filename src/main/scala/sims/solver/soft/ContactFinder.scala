@@ -59,7 +59,7 @@ private[sims] final class ContactFinder:
               val collision = narrowphase.collideGeneral(methods, a, b)
               if collision != null then addCollision(table, collision, key, last)
             case kind =>
-              if last >= 0 && persistence > 0 && keeps(table.committed, last, persistence) then keep(table, last, a, b, key)
+              if last >= 0 && persistence > 0 && keeps(table.committed, last, a, b, persistence) then keep(table, last, a, b, key)
               else
                 builtIn(kind, a, b, if last >= 0 then table.committed.side(last) else -1, speculativeDistance, linearSlop)
                 if manifold.pointCount > 0 then addManifold(table, a, b, key, last)
@@ -120,9 +120,9 @@ private[sims] final class ContactFinder:
     * relative placement changed by less than `persistence` (a shift of B in A's frame plus
     * the largest extent times the change of their relative rotation).
     */
-  private def keeps(old: Contacts, last: Int, persistence: Double): Boolean =
-    val a = old.bodyA(last)
-    val b = old.bodyB(last)
+  private def keeps(old: Contacts, last: Int, shapeA: Shape, shapeB: Shape, persistence: Double): Boolean =
+    val a = shapeA.body.index
+    val b = shapeB.body.index
     val k = last * Stride
     val turnA = bodies.startAngle(a) - old.data(k + CachedAngleA)
     val turnB = bodies.startAngle(b) - old.data(k + CachedAngleB)

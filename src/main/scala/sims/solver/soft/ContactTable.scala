@@ -34,12 +34,15 @@ private[sims] final class ContactTable:
     committed = built
     index.rebuild(committed.keys, committed.count)
 
+  /** Makes the last step's contacts the committed ones again (a step failed after `commit`). */
+  def uncommit(): Unit = commit()
+
   /** A copy of the committed generation (for a snapshot of the world). */
   def copyCommitted(): Contacts = committed.copy()
 
-  /** Puts back a copy taken by `copyCommitted` as the committed generation. */
+  /** Puts back a copy taken by `copyCommitted` as the committed generation (null: none). */
   def restoreCommitted(saved: Contacts): Unit =
-    committed = saved.copy()
+    committed = if saved == null then Contacts() else saved.copy()
     index.rebuild(committed.keys, committed.count)
 
 private[sims] object ContactTable:

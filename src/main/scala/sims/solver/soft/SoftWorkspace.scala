@@ -8,7 +8,7 @@ import sims.dynamics.joints.{ForceJoint, Joint}
   * step to step), the collision stage, the joints of the current step and the softness
   * coefficients.
   */
-private[sims] final class SoftWorkspace:
+private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
   /** The bodies during a step. */
   val bodies: SoftBodies = SoftBodies()
   /** The contacts, this step's and the last step's. */
@@ -53,3 +53,45 @@ private[sims] final class SoftWorkspace:
     if index >= 0 && forceBodyStamp(index) != stamp then
       forceBodyStamp(index) = stamp
       forceBodies += index
+
+  // The committed contacts when the step under way began: a failed step that already
+  // committed its contacts swaps the generations back.
+  private var committedAtStart: Contacts = null
+
+  /** The committed contacts as copies, points and separations after the step's motion. */
+  def contactViews(): IndexedSeq[sims.collision.Contact] =
+    import ContactTable.*
+    val contacts = table.committed
+    val state = bodies.state
+    IndexedSeq.tabulate(contacts.count) { c =>
+      val a = contacts.bodyA(c)
+      val b = contacts.bodyB(c)
+      val k = c * Stride
+      val nx = contacts.data(k + NormalX)
+      val ny = contacts.data(k + NormalY)
+      val sA = a * SoftBodies.Stride
+      val sB = b * SoftBodies.Stride
+      val count = contacts.pointCount(c)
+      val points = IndexedSeq.tabulate(count) { p =>
+        val q = k + FirstPoint + p * PointStride
+        val rx = contacts.data(q + AnchorAX); val ry = contacts.data(q + AnchorAY)
+        sims.geometry.Vector2D(bodies.startX(a) + state(sA + 3) + state(sA + 6) * rx - state(sA + 7) * ry,
+          bodies.startY(a) + state(sA + 4) + state(sA + 7) * rx + state(sA + 6) * ry)
+      }
+      val separations = IndexedSeq.tabulate(count) { p =>
+        val q = k + FirstPoint + p * PointStride
+        val rAx = contacts.data(q + AnchorAX); val rAy = contacts.data(q + AnchorAY)
+        val rBx = contacts.data(q + AnchorBX); val rBy = contacts.data(q + AnchorBY)
+        val dx = state(sB + 3) - state(sA + 3) + (state(sB + 6) * rBx - state(sB + 7) * rBy) - (state(sA + 6) * rAx - state(sA + 7) * rAy)
+        val dy = state(sB + 4) - state(sA + 4) + (state(sB + 7) * rBx + state(sB + 6) * rBy) - (state(sA + 7) * rAx + state(sA + 6) * rAy)
+        dx * nx + dy * ny + contacts.data(q + BaseSeparation)
+      }
+      def column(offset: Int) = IndexedSeq.tabulate(count)(p => contacts.data(k + FirstPoint + p * PointStride + offset))
+      sims.collision.Contact(contacts.shapeA(c), contacts.shapeB(c), sims.geometry.Vector2D(nx, ny), points,
+        separations, column(NormalImpulse), column(TangentImpulse))
+    }
+
+  def copyState(): AnyRef = table.copyCommitted()
+  def restoreState(saved: AnyRef): Unit = table.restoreCommitted(saved.asInstanceOf[Contacts])
+  def beginStep(): Unit = committedAtStart = table.committed
+  def undoStep(): Unit = if table.committed ne committedAtStart then table.uncommit()
