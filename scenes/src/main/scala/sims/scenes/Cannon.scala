@@ -24,7 +24,9 @@ object Cannon extends Scene:
     world += ball
 
   def build(): Staged =
-    val world = Scene.worldOf(Scene.ground(21, centreX = 9))
+    // A backstop at the far end of the ground: a ball knocked out of the pyramid rolls for
+    // long (under the soft step, with little loss, beyond the ground's end within 5 s).
+    val world = Scene.worldOf(Scene.ground(21, centreX = 9), Scene.fixedBox(Vector2D(29.5, 1), 0.5, 1))
     for row <- 0 until Rows; i <- 0 until Rows - row do
       val x = 3 + (i - (Rows - row - 1) / 2.0) * 2 * Radius
       // Rows rest in the hollows of the row below: a circle pyramid, not a column stack.
