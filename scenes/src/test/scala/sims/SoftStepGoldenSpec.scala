@@ -1,0 +1,31 @@
+package sims
+
+import org.scalatest.funsuite.AnyFunSuite
+import org.scalatest.matchers.should.Matchers
+import sims.solver.SoftStep
+
+/** The soft step's own golden hashes: the golden scenes stepped with `SoftStep()` give these
+  * bits. A refactoring or speed work on the soft step must keep them; a deliberate change of
+  * its results updates them in the same commit, saying why (unlike the classic step's, which
+  * never change: see PerformanceRegressionSpec).
+  */
+class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
+  import PerformanceRegressionSpec.{golden, hash}
+
+  private def soft(name: String, steps: Int): String =
+    val world = golden(name)
+    world.solver = SoftStep()
+    for _ <- 1 to steps do world.step()
+    hash(world)
+
+  test("golden-ballpit-300 under SoftStep after 240 steps") {
+    soft("golden-ballpit-300", 240) shouldBe "e505f82b1af4bbdb"
+  }
+
+  test("golden-pyramid-12 under SoftStep after 240 steps") {
+    soft("golden-pyramid-12", 240) shouldBe "40c6a7ec89296805"
+  }
+
+  test("golden-mixed under SoftStep after 240 steps") {
+    soft("golden-mixed", 240) shouldBe "9beaacaf742b8b65"
+  }
