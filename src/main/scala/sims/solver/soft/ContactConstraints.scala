@@ -24,7 +24,8 @@ private[sims] object ContactConstraints:
     * separations are the collision stage's.
     */
   def prepare(contacts: Contacts, bodies: SoftBodies, softness: Softness, staticSoftness: Softness): Unit =
-    val data = contacts.data
+    val hot = contacts.hot
+    val cold = contacts.cold
     val state = bodies.state
     var c = 0
     while c < contacts.count do
@@ -32,52 +33,52 @@ private[sims] object ContactConstraints:
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
       val mB = bodies.invMass(b); val iB = bodies.invI(b)
-      val k = c * Stride
+      val k = contacts.offset(c)
       val soft = if mA == 0 || mB == 0 then staticSoftness else softness
-      data(k + BiasRate) = soft.biasRate
-      data(k + MassScale) = soft.massScale
-      data(k + ImpulseScale) = soft.impulseScale
-      val nx = data(k + NormalX); val ny = data(k + NormalY)
+      hot(k + BiasRate) = soft.biasRate
+      hot(k + MassScale) = soft.massScale
+      hot(k + ImpulseScale) = soft.impulseScale
+      val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val tx = -ny; val ty = nx
       val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
       var p = 0
       while p < contacts.pointCount(c) do
-        val q = k + FirstPoint + p * PointStride
-        val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
-        val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
-        data(q + BaseSeparation) = data(q + Separation) - ((rBx - rAx) * nx + (rBy - rAy) * ny)
+        val q = contacts.hotPoint(c, p)
+        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+        val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
+        hot(q + BaseSeparation) = cold(contacts.coldPoint(c, p) + Separation) - ((rBx - rAx) * nx + (rBy - rAy) * ny)
         val rnA = rAx * ny - rAy * nx; val rnB = rBx * ny - rBy * nx
         val kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB
-        data(q + NormalMass) = if kNormal > 0 then 1 / kNormal else 0
+        hot(q + NormalMass) = if kNormal > 0 then 1 / kNormal else 0
         val rtA = rAx * ty - rAy * tx; val rtB = rBx * ty - rBy * tx
         val kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB
-        data(q + TangentMass) = if kTangent > 0 then 1 / kTangent else 0
-        data(q + MaxNormalImpulse) = 0
+        hot(q + TangentMass) = if kTangent > 0 then 1 / kTangent else 0
+        hot(q + MaxNormalImpulse) = 0
         val dvx = state(sB) - state(sB + 2) * rBy - state(sA) + state(sA + 2) * rAy
         val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
-        data(q + RelativeVelocity) = dvx * nx + dvy * ny
+        hot(q + RelativeVelocity) = dvx * nx + dvy * ny
         p += 1
       c += 1
 
   /** Applies each point's accumulated impulses (from the last step, then from the substeps). */
   def warmStart(contacts: Contacts, bodies: SoftBodies): Unit =
-    val data = contacts.data
+    val hot = contacts.hot
     var c = 0
     while c < contacts.count do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
-      val k = c * Stride
-      val nx = data(k + NormalX); val ny = data(k + NormalY)
+      val k = contacts.offset(c)
+      val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       var p = 0
       while p < contacts.pointCount(c) do
-        val q = k + FirstPoint + p * PointStride
-        val normal = data(q + NormalImpulse)
-        val tangent = data(q + TangentImpulse)
+        val q = k + Header + p * HotPoint
+        val normal = hot(q + NormalImpulse)
+        val tangent = hot(q + TangentImpulse)
         // n normal + t tangent, t = n.leftNormal = (-ny, nx)
         val px = nx * normal - ny * tangent
         val py = ny * normal + nx * tangent
-        bodies.applyImpulse(a, -px, -py, data(q + AnchorAX), data(q + AnchorAY))
-        bodies.applyImpulse(b, px, py, data(q + AnchorBX), data(q + AnchorBY))
+        bodies.applyImpulse(a, -px, -py, hot(q + AnchorAX), hot(q + AnchorAY))
+        bodies.applyImpulse(b, px, py, hot(q + AnchorBX), hot(q + AnchorBY))
         p += 1
       c += 1
 
@@ -85,7 +86,7 @@ private[sims] object ContactConstraints:
     * solve pass; without, the relax pass), then, in the relax pass, friction.
     */
   def solve(contacts: Contacts, bodies: SoftBodies, inverseH: Double, contactSpeed: Double, useBias: Boolean): Unit =
-    val data = contacts.data
+    val hot = contacts.hot
     val state = bodies.state
     var c = 0
     while c < contacts.count do
@@ -96,40 +97,40 @@ private[sims] object ContactConstraints:
       val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
       var vAx = state(sA); var vAy = state(sA + 1); var wA = state(sA + 2)
       var vBx = state(sB); var vBy = state(sB + 1); var wB = state(sB + 2)
-      // Displacement of B relative to A's frame of motion: the points' current separation.
+      // B's displacement relative to A's since the step began: the points' current separation.
       val dpx = state(sB + 3) - state(sA + 3)
       val dpy = state(sB + 4) - state(sA + 4)
       val cosA = state(sA + 6); val sinA = state(sA + 7)
       val cosB = state(sB + 6); val sinB = state(sB + 7)
-      val k = c * Stride
-      val nx = data(k + NormalX); val ny = data(k + NormalY)
+      val k = contacts.offset(c)
+      val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val count = contacts.pointCount(c)
       var p = 0
       while p < count do
-        val q = k + FirstPoint + p * PointStride
-        val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
-        val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
+        val q = k + Header + p * HotPoint
+        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+        val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
         // current separation from the bodies' motion since the start of the step
         val dx = dpx + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
         val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
-        val s = dx * nx + dy * ny + data(q + BaseSeparation)
+        val s = dx * nx + dy * ny + hot(q + BaseSeparation)
         var bias = 0.0
         var massScale = 1.0
         var impulseScale = 0.0
         if s > 0 then bias = s * inverseH // speculative: may close the gap, no more
         else if useBias then
-          bias = math.max(data(k + BiasRate) * s, -contactSpeed)
-          massScale = data(k + MassScale)
-          impulseScale = data(k + ImpulseScale)
+          bias = math.max(hot(k + BiasRate) * s, -contactSpeed)
+          massScale = hot(k + MassScale)
+          impulseScale = hot(k + ImpulseScale)
         val dvx = vBx - wB * rBy - vAx + wA * rAy
         val dvy = vBy + wB * rBx - vAy - wA * rAx
         val vn = dvx * nx + dvy * ny
-        val accumulated = data(q + NormalImpulse)
-        var impulse = -data(q + NormalMass) * massScale * (vn + bias) - impulseScale * accumulated
+        val accumulated = hot(q + NormalImpulse)
+        var impulse = -hot(q + NormalMass) * massScale * (vn + bias) - impulseScale * accumulated
         val total = math.max(accumulated + impulse, 0.0)
         impulse = total - accumulated
-        data(q + NormalImpulse) = total
-        if impulse > data(q + MaxNormalImpulse) then data(q + MaxNormalImpulse) = impulse
+        hot(q + NormalImpulse) = total
+        if impulse > hot(q + MaxNormalImpulse) then hot(q + MaxNormalImpulse) = impulse
         val px = impulse * nx; val py = impulse * ny
         vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
         vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
@@ -137,25 +138,26 @@ private[sims] object ContactConstraints:
       // Friction, in the relax pass only (as in Box2D v3; solving it in the solve pass too
       // measured no better on the stack, pyramid and ball-pit scenes), bounded by the normal
       // impulses just found.
-      val tx = -ny; val ty = nx
-      val friction = data(k + Friction)
-      p = if useBias then count else 0
-      while p < count do
-        val q = k + FirstPoint + p * PointStride
-        val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
-        val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
-        val dvx = vBx - wB * rBy - vAx + wA * rAy
-        val dvy = vBy + wB * rBx - vAy - wA * rAx
-        val vt = dvx * tx + dvy * ty
-        val accumulated = data(q + TangentImpulse)
-        val bound = friction * data(q + NormalImpulse)
-        val total = math.max(-bound, math.min(bound, accumulated - data(q + TangentMass) * vt))
-        val impulse = total - accumulated
-        data(q + TangentImpulse) = total
-        val px = impulse * tx; val py = impulse * ty
-        vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
-        vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
-        p += 1
+      if !useBias then
+        val tx = -ny; val ty = nx
+        val friction = hot(k + Friction)
+        p = 0
+        while p < count do
+          val q = k + Header + p * HotPoint
+          val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+          val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
+          val dvx = vBx - wB * rBy - vAx + wA * rAy
+          val dvy = vBy + wB * rBx - vAy - wA * rAx
+          val vt = dvx * tx + dvy * ty
+          val accumulated = hot(q + TangentImpulse)
+          val bound = friction * hot(q + NormalImpulse)
+          val total = math.max(-bound, math.min(bound, accumulated - hot(q + TangentMass) * vt))
+          val impulse = total - accumulated
+          hot(q + TangentImpulse) = total
+          val px = impulse * tx; val py = impulse * ty
+          vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
+          vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
+          p += 1
       state(sA) = vAx; state(sA + 1) = vAy; state(sA + 2) = wA
       state(sB) = vBx; state(sB + 1) = vBy; state(sB + 2) = wB
       c += 1
@@ -165,30 +167,30 @@ private[sims] object ContactConstraints:
     * to -e times the one before (impulse clamped as always).
     */
   def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double): Unit =
-    val data = contacts.data
+    val hot = contacts.hot
     val state = bodies.state
     var c = 0
     while c < contacts.count do
-      val k = c * Stride
-      val e = data(k + Restitution)
+      val k = contacts.offset(c)
+      val e = hot(k + Restitution)
       if e != 0 then
         val a = contacts.bodyA(c)
         val b = contacts.bodyB(c)
         val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
-        val nx = data(k + NormalX); val ny = data(k + NormalY)
+        val nx = hot(k + NormalX); val ny = hot(k + NormalY)
         var p = 0
         while p < contacts.pointCount(c) do
-          val q = k + FirstPoint + p * PointStride
-          if data(q + RelativeVelocity) < -threshold && data(q + MaxNormalImpulse) > 0 then
-            val rAx = data(q + AnchorAX); val rAy = data(q + AnchorAY)
-            val rBx = data(q + AnchorBX); val rBy = data(q + AnchorBY)
+          val q = k + Header + p * HotPoint
+          if hot(q + RelativeVelocity) < -threshold && hot(q + MaxNormalImpulse) > 0 then
+            val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+            val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
             val dvx = state(sB) - state(sB + 2) * rBy - state(sA) + state(sA + 2) * rAy
             val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
             val vn = dvx * nx + dvy * ny
-            val accumulated = data(q + NormalImpulse)
-            val total = math.max(accumulated - data(q + NormalMass) * (vn + e * data(q + RelativeVelocity)), 0.0)
+            val accumulated = hot(q + NormalImpulse)
+            val total = math.max(accumulated - hot(q + NormalMass) * (vn + e * hot(q + RelativeVelocity)), 0.0)
             val impulse = total - accumulated
-            data(q + NormalImpulse) = total
+            hot(q + NormalImpulse) = total
             bodies.applyImpulse(a, -impulse * nx, -impulse * ny, rAx, rAy)
             bodies.applyImpulse(b, impulse * nx, impulse * ny, rBx, rBy)
           p += 1

@@ -91,27 +91,28 @@ private[sims] final class ContactFinder:
     */
   private def addManifold(table: ContactTable, a: Shape, b: Shape, key: Long, last: Int): Unit =
     val contacts = table.current
-    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY)
+    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount)
     contacts.side(c) = manifold.polygonSide
-    contacts.pointCount(c) = manifold.pointCount
     cachePlacements(contacts, c)
-    val data = contacts.data
+    val hot = contacts.hot
+    val cold = contacts.cold
     var p = 0
     while p < manifold.pointCount do
-      val q = c * Stride + FirstPoint + p * PointStride
       setPoint(contacts, c, p, manifold.x(p), manifold.y(p), manifold.separation(p))
-      data(q + CachedAnchorAX) = data(q + AnchorAX); data(q + CachedAnchorAY) = data(q + AnchorAY)
-      data(q + CachedAnchorBX) = data(q + AnchorBX); data(q + CachedAnchorBY) = data(q + AnchorBY)
-      data(q + CachedSeparation) = manifold.separation(p)
+      val q = contacts.hotPoint(c, p)
+      val r = contacts.coldPoint(c, p)
+      cold(r + CachedAnchorAX) = hot(q + AnchorAX); cold(r + CachedAnchorAY) = hot(q + AnchorAY)
+      cold(r + CachedAnchorBX) = hot(q + AnchorBX); cold(r + CachedAnchorBY) = hot(q + AnchorBY)
+      cold(r + CachedSeparation) = manifold.separation(p)
       contacts.ids(2 * c + p) = manifold.id(p)
       if last >= 0 then
         val old = table.committed
         var o = 0
         while o < old.pointCount(last) do
           if old.ids(2 * last + o) == manifold.id(p) then
-            val r = last * Stride + FirstPoint + o * PointStride
-            data(q + NormalImpulse) = old.data(r + NormalImpulse)
-            data(q + TangentImpulse) = old.data(r + TangentImpulse)
+            val from = old.hotPoint(last, o)
+            hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
+            hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
           o += 1
       p += 1
 
@@ -123,9 +124,9 @@ private[sims] final class ContactFinder:
   private def keeps(old: Contacts, last: Int, shapeA: Shape, shapeB: Shape, persistence: Double): Boolean =
     val a = shapeA.body.index
     val b = shapeB.body.index
-    val k = last * Stride
-    val turnA = bodies.startAngle(a) - old.data(k + CachedAngleA)
-    val turnB = bodies.startAngle(b) - old.data(k + CachedAngleB)
+    val k = last * ColdStride
+    val turnA = bodies.startAngle(a) - old.cold(k + CachedAngleA)
+    val turnB = bodies.startAngle(b) - old.cold(k + CachedAngleB)
     if math.abs(turnA) >= ContactFinder.KeepAngle || math.abs(turnB) >= ContactFinder.KeepAngle then false
     else
       // B's centre in A's frame now against then, measured in A's frame then:
@@ -134,83 +135,92 @@ private[sims] final class ContactFinder:
       val dy = bodies.startY(b) - bodies.startY(a)
       val c = ContactFinder.cosine(turnA)
       val s = ContactFinder.sine(turnA)
-      val relativeX = c * dx + s * dy - old.data(k + CachedRelativeX)
-      val relativeY = -s * dx + c * dy - old.data(k + CachedRelativeY)
+      val relativeX = c * dx + s * dy - old.cold(k + CachedRelativeX)
+      val relativeY = -s * dx + c * dy - old.cold(k + CachedRelativeY)
       val extentA = if bodies.invMass(a) == 0 then 0.0 else bodies.bodies(a).extent
       val extentB = if bodies.invMass(b) == 0 then 0.0 else bodies.bodies(b).extent
       val shift = math.sqrt(relativeX * relativeX + relativeY * relativeY)
       shift + math.max(extentA, extentB) * math.abs(ContactFinder.sine(turnB - turnA)) < persistence
 
   /** Appends the last step's contact `last` again: the same normal, ids and impulses, its
-    * anchors turned with their bodies and its separations updated from the bodies' motion.
+    * separations updated from the bodies' motion.
     */
   private def keep(table: ContactTable, last: Int, a: Shape, b: Shape, key: Long): Unit =
     val old = table.committed
     val contacts = table.current
-    val k = last * Stride
-    val c = start(contacts, a, b, key, old.data(k + NormalX), old.data(k + NormalY))
+    val points = old.pointCount(last)
+    val k = old.offset(last)
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points)
     contacts.side(c) = old.side(last)
-    contacts.pointCount(c) = old.pointCount(last)
-    val data = contacts.data
-    val n = c * Stride
-    data(n + CachedAngleA) = old.data(k + CachedAngleA); data(n + CachedAngleB) = old.data(k + CachedAngleB)
-    data(n + CachedRelativeX) = old.data(k + CachedRelativeX); data(n + CachedRelativeY) = old.data(k + CachedRelativeY)
+    val hot = contacts.hot
+    val cold = contacts.cold
+    val oldCold = last * ColdStride
+    System.arraycopy(old.cold, oldCold, cold, c * ColdStride, ColdStride)
     val ia = contacts.bodyA(c)
     val ib = contacts.bodyB(c)
-    val turnA = bodies.startAngle(ia) - old.data(k + CachedAngleA)
-    val turnB = bodies.startAngle(ib) - old.data(k + CachedAngleB)
+    val turnA = bodies.startAngle(ia) - old.cold(oldCold + CachedAngleA)
+    val turnB = bodies.startAngle(ib) - old.cold(oldCold + CachedAngleB)
     val cA = ContactFinder.cosine(turnA); val sA = ContactFinder.sine(turnA)
     val cB = ContactFinder.cosine(turnB); val sB = ContactFinder.sine(turnB)
-    val nx = data(n + NormalX); val ny = data(n + NormalY)
+    val nx = old.hot(k + NormalX); val ny = old.hot(k + NormalY)
     var p = 0
-    while p < old.pointCount(last) do
-      val r = k + FirstPoint + p * PointStride
-      val q = n + FirstPoint + p * PointStride
-      System.arraycopy(old.data, r, data, q, PointStride)
+    while p < points do
+      val from = old.hotPoint(last, p)
+      val q = contacts.hotPoint(c, p)
+      val r = contacts.coldPoint(c, p)
       contacts.ids(2 * c + p) = old.ids(2 * last + p)
-      val rAx = cA * old.data(r + CachedAnchorAX) - sA * old.data(r + CachedAnchorAY)
-      val rAy = sA * old.data(r + CachedAnchorAX) + cA * old.data(r + CachedAnchorAY)
-      val rBx = cB * old.data(r + CachedAnchorBX) - sB * old.data(r + CachedAnchorBY)
-      val rBy = sB * old.data(r + CachedAnchorBX) + cB * old.data(r + CachedAnchorBY)
-      // The two anchor points coincided when the manifold was computed; their gap along n since
-      // then, with the arms turned with their bodies, changes the separation.
+      hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
+      hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
+      val anchorAX = cold(r + CachedAnchorAX); val anchorAY = cold(r + CachedAnchorAY)
+      val anchorBX = cold(r + CachedAnchorBX); val anchorBY = cold(r + CachedAnchorBY)
+      // The impulses act where the manifold put them (its anchors), not turned: the manifold
+      // is kept whole, arms and normal as computed. Turning the arms but not the normal couples
+      // them wrongly (measured: a 12-box stack then leans and falls within 10 s; so does acting
+      // at the middle of the two anchor points). The price: once the anchor points have slid
+      // apart along the surface, the two impulses form a small couple, and angular momentum is
+      // no longer exact (measured: 4e-4 of it over 2 s in a tumbling free pair).
+      hot(q + AnchorAX) = anchorAX; hot(q + AnchorAY) = anchorAY
+      hot(q + AnchorBX) = anchorBX; hot(q + AnchorBY) = anchorBY
+      // The two anchor points coincided when the manifold was computed; their gap along n
+      // since then, with the arms turned with their bodies, changes the separation.
+      val rAx = cA * anchorAX - sA * anchorAY
+      val rAy = sA * anchorAX + cA * anchorAY
+      val rBx = cB * anchorBX - sB * anchorBY
+      val rBy = sB * anchorBX + cB * anchorBY
       val gapX = bodies.startX(ib) + rBx - bodies.startX(ia) - rAx
       val gapY = bodies.startY(ib) + rBy - bodies.startY(ia) - rAy
-      data(q + Separation) = old.data(r + CachedSeparation) + gapX * nx + gapY * ny
-      // The impulses act where the manifold put them (the copied anchors), not turned: the
-      // manifold is kept whole, arms and normal as computed. Turning the arms but not the normal
-      // couples them wrongly (measured: a 12-box stack then leans and falls within 10 s; so
-      // does acting at the middle of the two anchor points). The price: once the anchor points
-      // have slid apart along the surface, the two impulses form a small couple, and angular
-      // momentum is no longer exact (measured: 4e-4 of it over 2 s in a tumbling free pair).
-      data(q + PointX) = bodies.startX(ia) + rAx
-      data(q + PointY) = bodies.startY(ia) + rAy
+      cold(r + Separation) = cold(r + CachedSeparation) + gapX * nx + gapY * ny
+      cold(r + PointX) = bodies.startX(ia) + rAx
+      cold(r + PointY) = bodies.startY(ia) + rAy
       p += 1
 
-  /** Sets point p of contact c at (x, y) with separation s: anchors from the bodies' centres. */
+  /** Sets point p of contact c at (x, y) with separation s: anchors from the bodies' centres,
+    * no impulses yet.
+    */
   private def setPoint(contacts: Contacts, c: Int, p: Int, x: Double, y: Double, separation: Double): Unit =
-    val data = contacts.data
-    val q = c * Stride + FirstPoint + p * PointStride
+    val q = contacts.hotPoint(c, p)
+    val r = contacts.coldPoint(c, p)
     val a = contacts.bodyA(c)
     val b = contacts.bodyB(c)
-    data(q + PointX) = x
-    data(q + PointY) = y
-    data(q + AnchorAX) = x - bodies.startX(a); data(q + AnchorAY) = y - bodies.startY(a)
-    data(q + AnchorBX) = x - bodies.startX(b); data(q + AnchorBY) = y - bodies.startY(b)
-    data(q + Separation) = separation
-    data(q + NormalImpulse) = 0
-    data(q + TangentImpulse) = 0
+    val hot = contacts.hot
+    hot(q + AnchorAX) = x - bodies.startX(a); hot(q + AnchorAY) = y - bodies.startY(a)
+    hot(q + AnchorBX) = x - bodies.startX(b); hot(q + AnchorBY) = y - bodies.startY(b)
+    hot(q + NormalImpulse) = 0
+    hot(q + TangentImpulse) = 0
+    contacts.cold(r + PointX) = x
+    contacts.cold(r + PointY) = y
+    contacts.cold(r + Separation) = separation
 
   /** Records the bodies' placements of contact c, at which its manifold was computed. */
   private def cachePlacements(contacts: Contacts, c: Int): Unit =
     val a = contacts.bodyA(c)
     val b = contacts.bodyB(c)
-    val k = c * Stride
-    contacts.data(k + CachedAngleA) = bodies.startAngle(a)
-    contacts.data(k + CachedAngleB) = bodies.startAngle(b)
+    val k = c * ColdStride
+    contacts.cold(k + CachedAngleA) = bodies.startAngle(a)
+    contacts.cold(k + CachedAngleB) = bodies.startAngle(b)
     // cB - cA in the world frame; `keeps` turns the current one back by A's turn since.
-    contacts.data(k + CachedRelativeX) = bodies.startX(b) - bodies.startX(a)
-    contacts.data(k + CachedRelativeY) = bodies.startY(b) - bodies.startY(a)
+    contacts.cold(k + CachedRelativeX) = bodies.startX(b) - bodies.startX(a)
+    contacts.cold(k + CachedRelativeY) = bodies.startY(b) - bodies.startY(a)
 
   /** Appends a collision of a user kind as a contact: its normal and (at most two of) its
     * points, warm started from the last step's points within `UserMatchDistance`.
@@ -222,14 +232,11 @@ private[sims] final class ContactFinder:
       val contacts = table.current
       val nx = collision.normalX
       val ny = collision.normalY
-      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny)
+      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count)
       contacts.side(c) = -1
-      contacts.pointCount(c) = count
       val separation = -Collision.overlapAlong(collision.shape1, collision.shape2, nx, ny)
-      val data = contacts.data
       var p = 0
       while p < count do
-        val q = c * Stride + FirstPoint + p * PointStride
         val x = collision.pointX(p)
         val y = collision.pointY(p)
         setPoint(contacts, c, p, x, y, separation)
@@ -238,30 +245,33 @@ private[sims] final class ContactFinder:
           val old = table.committed
           var o = 0
           while o < old.pointCount(last) do
-            val r = last * Stride + FirstPoint + o * PointStride
-            val dx = old.data(r + PointX) - x
-            val dy = old.data(r + PointY) - y
+            val r = old.coldPoint(last, o)
+            val dx = old.cold(r + PointX) - x
+            val dy = old.cold(r + PointY) - y
             if dx * dx + dy * dy <= ContactFinder.UserMatchDistance * ContactFinder.UserMatchDistance then
-              data(q + NormalImpulse) = old.data(r + NormalImpulse)
-              data(q + TangentImpulse) = old.data(r + TangentImpulse)
+              val from = old.hotPoint(last, o)
+              val q = contacts.hotPoint(c, p)
+              contacts.hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
+              contacts.hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
             o += 1
         p += 1
 
-  /** Starts contact of shapes (a, b) with normal (nx, ny) from a to b: its bodies, key and the
-    * pair's friction and restitution (products of the shapes', as in the classic step).
+  /** Starts contact of shapes (a, b) with normal (nx, ny) from a to b and `points` points: its
+    * bodies, key and the pair's friction and restitution (products of the shapes', as in the
+    * classic step).
     */
-  private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double): Int =
-    val c = contacts.add()
+  private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double, points: Int): Int =
+    val c = contacts.add(points)
     contacts.shapeA(c) = a
     contacts.shapeB(c) = b
     contacts.bodyA(c) = a.body.index
     contacts.bodyB(c) = b.body.index
     contacts.keys(c) = key
-    val k = c * Stride
-    contacts.data(k + NormalX) = nx
-    contacts.data(k + NormalY) = ny
-    contacts.data(k + Friction) = a.friction * b.friction
-    contacts.data(k + Restitution) = a.restitution * b.restitution
+    val k = contacts.offset(c)
+    contacts.hot(k + NormalX) = nx
+    contacts.hot(k + NormalY) = ny
+    contacts.hot(k + Friction) = a.friction * b.friction
+    contacts.hot(k + Restitution) = a.restitution * b.restitution
     c
 
 private object ContactFinder:

@@ -22,7 +22,7 @@ private[sims] final class ContactTable:
   private val index = PairIndex()
 
   /** Starts building this step's contacts. */
-  def begin(): Unit = current.count = 0
+  def begin(): Unit = current.clear()
 
   /** The committed contact of the shape pair `key`, or -1. */
   def lastOf(key: Long): Int = index.get(key)
@@ -49,7 +49,9 @@ private[sims] object ContactTable:
   /** The key of the shape pair (a, b): their join orders, the first in the high half. */
   def key(a: Shape, b: Shape): Long = (a.worldIndex.toLong << 32) | (b.worldIndex.toLong & 0xffffffffL)
 
-  // Offsets in a contact's block of `Stride` doubles.
+  // A contact's hot block in `Contacts.hot`, at `offset(c)`: what the substeps read and write,
+  // `Header` doubles, then `HotPoint` per point. Compact, because the substeps sweep it eight
+  // times a step: a ball's contact (one point) is 20 doubles.
   inline val NormalX = 0
   inline val NormalY = 1
   inline val Friction = 2
@@ -57,15 +59,8 @@ private[sims] object ContactTable:
   inline val BiasRate = 4
   inline val MassScale = 5
   inline val ImpulseScale = 6
-  // The bodies' placements when the manifold was computed (for keeping it, see ContactFinder):
-  // both rotations and B's centre in A's frame.
-  inline val CachedAngleA = 7
-  inline val CachedAngleB = 8
-  inline val CachedRelativeX = 9
-  inline val CachedRelativeY = 10
-  /** Offset of the first point's block; point p starts at `FirstPoint + p * PointStride`. */
-  inline val FirstPoint = 12
-  // Offsets in a point's block.
+  inline val Header = 8
+  // Offsets in a point's hot block.
   inline val AnchorAX = 0 // arm from A's centre at the start of the step
   inline val AnchorAY = 1
   inline val AnchorBX = 2 // arm from B's centre
@@ -73,25 +68,36 @@ private[sims] object ContactTable:
   inline val BaseSeparation = 4 // separation minus n . (anchorB - anchorA)
   inline val NormalMass = 5
   inline val TangentMass = 6
-  inline val NormalImpulse = 7 // accumulated over the step (and warm started)
+  inline val NormalImpulse = 7 // accumulated (and warm started)
   inline val TangentImpulse = 8
   inline val MaxNormalImpulse = 9 // the largest normal impulse applied in one solve
   inline val RelativeVelocity = 10 // normal relative velocity before the step
-  inline val Separation = 11 // at the start of the step
-  inline val PointX = 12 // world position at the start of the step (A's anchor point)
-  inline val PointY = 13
-  // The manifold's anchors (world frame) and separation when it was computed.
-  inline val CachedAnchorAX = 14
-  inline val CachedAnchorAY = 15
-  inline val CachedAnchorBX = 16
-  inline val CachedAnchorBY = 17
-  inline val CachedSeparation = 18
-  inline val PointStride = 20
-  inline val Stride = FirstPoint + 2 * PointStride
+  inline val HotPoint = 12
+
+  // A contact's cold block in `Contacts.cold`, at `c * ColdStride`: what the collision stage
+  // keeps for the next step. The bodies' placements when the manifold was computed: both
+  // rotations and cB - cA, for keeping it (see ContactFinder).
+  inline val CachedAngleA = 0
+  inline val CachedAngleB = 1
+  inline val CachedRelativeX = 2
+  inline val CachedRelativeY = 3
+  inline val ColdHeader = 4
+  // Offsets in a point's cold block.
+  inline val Separation = 0 // at the start of the step
+  inline val PointX = 1 // world position at the start of the step (A's anchor point)
+  inline val PointY = 2
+  inline val CachedAnchorAX = 3 // anchors (world frame) and separation when computed
+  inline val CachedAnchorAY = 4
+  inline val CachedAnchorBX = 5
+  inline val CachedAnchorBY = 6
+  inline val CachedSeparation = 7
+  inline val ColdPoint = 8
+  inline val ColdStride = ColdHeader + 2 * ColdPoint
 
 /** One generation of contacts, in flat arrays: contact c has shapes, bodies (their indices),
   * the pair's key, point count and ids, the polygon side a polygon-circle contact was measured
-  * from, and `ContactTable.Stride` doubles of data from `c * Stride`.
+  * from, a hot block of doubles at `offset(c)` in `hot` and a cold one at `c * ColdStride` in
+  * `cold` (see [[ContactTable]]'s offsets).
   */
 private[sims] final class Contacts:
   import ContactTable.*
@@ -104,24 +110,47 @@ private[sims] final class Contacts:
   var pointCount: Array[Int] = new Array[Int](16)
   var ids: Array[Int] = new Array[Int](32)
   var side: Array[Int] = new Array[Int](16)
-  var data: Array[Double] = new Array[Double](16 * Stride)
+  var offset: Array[Int] = new Array[Int](16)
+  var hot: Array[Double] = new Array[Double](16 * (Header + HotPoint))
+  /** Doubles of `hot` in use. */
+  var hotSize: Int = 0
+  var cold: Array[Double] = new Array[Double](16 * ColdStride)
 
-  /** Appends an empty contact and returns its index. */
-  def add(): Int =
+  /** Appends an empty contact of `points` points and returns its index. */
+  def add(points: Int): Int =
     if count == keys.length then grow(2 * count)
+    val size = Header + points * HotPoint
+    if hotSize + size > hot.length then hot = java.util.Arrays.copyOf(hot, 2 * (hotSize + size))
+    offset(count) = hotSize
+    pointCount(count) = points
+    hotSize += size
     count += 1
     count - 1
+
+  /** Forgets every contact. */
+  def clear(): Unit =
+    count = 0
+    hotSize = 0
+
+  /** Where point p of contact c starts in `hot`. */
+  inline def hotPoint(c: Int, p: Int): Int = offset(c) + Header + p * HotPoint
+
+  /** Where point p of contact c starts in `cold`. */
+  inline def coldPoint(c: Int, p: Int): Int = c * ColdStride + ColdHeader + p * ColdPoint
 
   /** A deep copy. */
   def copy(): Contacts =
     val c = Contacts()
     c.grow(math.max(count, 16))
     c.count = count
+    c.hotSize = hotSize
+    c.hot = java.util.Arrays.copyOf(hot, math.max(hotSize, 16))
     System.arraycopy(shapeA, 0, c.shapeA, 0, count); System.arraycopy(shapeB, 0, c.shapeB, 0, count)
     System.arraycopy(bodyA, 0, c.bodyA, 0, count); System.arraycopy(bodyB, 0, c.bodyB, 0, count)
     System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(pointCount, 0, c.pointCount, 0, count)
     System.arraycopy(ids, 0, c.ids, 0, 2 * count); System.arraycopy(side, 0, c.side, 0, count)
-    System.arraycopy(data, 0, c.data, 0, count * Stride)
+    System.arraycopy(offset, 0, c.offset, 0, count)
+    System.arraycopy(cold, 0, c.cold, 0, count * ColdStride)
     c
 
   private def grow(capacity: Int): Unit =
@@ -129,7 +158,8 @@ private[sims] final class Contacts:
     bodyA = java.util.Arrays.copyOf(bodyA, capacity); bodyB = java.util.Arrays.copyOf(bodyB, capacity)
     keys = java.util.Arrays.copyOf(keys, capacity); pointCount = java.util.Arrays.copyOf(pointCount, capacity)
     ids = java.util.Arrays.copyOf(ids, 2 * capacity); side = java.util.Arrays.copyOf(side, capacity)
-    data = java.util.Arrays.copyOf(data, capacity * Stride)
+    offset = java.util.Arrays.copyOf(offset, capacity)
+    cold = java.util.Arrays.copyOf(cold, capacity * ColdStride)
 
 /** An open-addressing table from a pair key to a contact index; lookups depend on the key only,
   * so the solver's results never depend on hash order.

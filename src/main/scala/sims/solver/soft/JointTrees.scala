@@ -212,7 +212,9 @@ private[sims] final class JointTrees:
     nodeCount += 1
     node
 
-  /** Applies the direct joints' accumulated impulses. */
+  /** Applies the direct joints' accumulated impulses (the exact solve does not need them to
+    * converge, but the contacts solved before it in a pass see the joints' load).
+    */
   def warmStart(context: SoftContext): Unit =
     var t = 0
     while t < direct.length do

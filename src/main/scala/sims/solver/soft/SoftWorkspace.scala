@@ -62,31 +62,32 @@ private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
   def contactViews(): IndexedSeq[sims.collision.Contact] =
     import ContactTable.*
     val contacts = table.committed
+    val hot = contacts.hot
     val state = bodies.state
     IndexedSeq.tabulate(contacts.count) { c =>
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
-      val k = c * Stride
-      val nx = contacts.data(k + NormalX)
-      val ny = contacts.data(k + NormalY)
+      val k = contacts.offset(c)
+      val nx = hot(k + NormalX)
+      val ny = hot(k + NormalY)
       val sA = a * SoftBodies.Stride
       val sB = b * SoftBodies.Stride
       val count = contacts.pointCount(c)
       val points = IndexedSeq.tabulate(count) { p =>
-        val q = k + FirstPoint + p * PointStride
-        val rx = contacts.data(q + AnchorAX); val ry = contacts.data(q + AnchorAY)
+        val q = contacts.hotPoint(c, p)
+        val rx = hot(q + AnchorAX); val ry = hot(q + AnchorAY)
         sims.geometry.Vector2D(bodies.startX(a) + state(sA + 3) + state(sA + 6) * rx - state(sA + 7) * ry,
           bodies.startY(a) + state(sA + 4) + state(sA + 7) * rx + state(sA + 6) * ry)
       }
       val separations = IndexedSeq.tabulate(count) { p =>
-        val q = k + FirstPoint + p * PointStride
-        val rAx = contacts.data(q + AnchorAX); val rAy = contacts.data(q + AnchorAY)
-        val rBx = contacts.data(q + AnchorBX); val rBy = contacts.data(q + AnchorBY)
+        val q = contacts.hotPoint(c, p)
+        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+        val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
         val dx = state(sB + 3) - state(sA + 3) + (state(sB + 6) * rBx - state(sB + 7) * rBy) - (state(sA + 6) * rAx - state(sA + 7) * rAy)
         val dy = state(sB + 4) - state(sA + 4) + (state(sB + 7) * rBx + state(sB + 6) * rBy) - (state(sA + 7) * rAx + state(sA + 6) * rAy)
-        dx * nx + dy * ny + contacts.data(q + BaseSeparation)
+        dx * nx + dy * ny + hot(q + BaseSeparation)
       }
-      def column(offset: Int) = IndexedSeq.tabulate(count)(p => contacts.data(k + FirstPoint + p * PointStride + offset))
+      def column(offset: Int) = IndexedSeq.tabulate(count)(p => hot(contacts.hotPoint(c, p) + offset))
       sims.collision.Contact(contacts.shapeA(c), contacts.shapeB(c), sims.geometry.Vector2D(nx, ny), points,
         separations, column(NormalImpulse), column(TangentImpulse))
     }
