@@ -49,6 +49,7 @@ private[sims] final class UniformGrid extends Broadphase:
   private var groupSize = 0
   private var groupX0, groupY0 = 0
   private var groupRows = 0L
+  private var sorted = true
   // Query bookkeeping: the last query that found each shape.
   private var foundStamp = new Array[Int](0)
   private var queryStamp = 0
@@ -99,7 +100,14 @@ private[sims] final class UniformGrid extends Broadphase:
       i += 1
     gridBuilt = false
 
-  def findPairs(pairs: PairBuffer): Unit =
+  def findPairs(pairs: PairBuffer): Unit = findPairs(pairs, inGridOrder = true)
+
+  /** `findPairs`, with the pairs in the SPEC's coarse grid order or (`inGridOrder` false, for
+    * a solver that does not need it) in the internal grid's own order, still deterministic:
+    * each shape's partners in the order its cells find them.
+    */
+  def findPairs(pairs: PairBuffer, inGridOrder: Boolean): Unit =
+    sorted = inGridOrder
     grid.reset(count)
     val side = _gridSide
     var i = 0
@@ -222,21 +230,26 @@ private[sims] final class UniformGrid extends Broadphase:
     sims.geometry.AABB.overlaps(boxMinX(j), boxMinY(j), boxMaxX(j), boxMaxY(j),
       boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && PairFilter.accepts(shapes(j), shapes(i))
 
-  /** Inserts partner j of shape i into the group, in the coarse grid's order: by the rank of
-    * the coarse cell holding the overlap's corner among i's cells, then the later shape first.
+  /** Inserts partner j of shape i into the group: in the coarse grid's order (by the rank of
+    * the coarse cell holding the overlap's corner among i's cells, then the later shape first),
+    * or, unsorted, in the order found.
     */
   private def addToGroup(j: Int, i: Int): Unit =
-    val cx = math.max(coarseX0(j), coarseX0(i))
-    val cy = math.max(coarseY0(j), coarseY0(i))
-    val rank = (cx.toLong - groupX0) * groupRows + (cy.toLong - groupY0)
-    val key = (rank << 32) | (Int.MaxValue - j).toLong
     if groupSize == groupKeys.length then groupKeys = java.util.Arrays.copyOf(groupKeys, 2 * groupSize)
-    var g = groupSize
-    while g > 0 && groupKeys(g - 1) > key do
-      groupKeys(g) = groupKeys(g - 1)
-      g -= 1
-    groupKeys(g) = key
-    groupSize += 1
+    if !sorted then
+      groupKeys(groupSize) = (Int.MaxValue - j).toLong
+      groupSize += 1
+    else
+      val cx = math.max(coarseX0(j), coarseX0(i))
+      val cy = math.max(coarseY0(j), coarseY0(i))
+      val rank = (cx.toLong - groupX0) * groupRows + (cy.toLong - groupY0)
+      val key = (rank << 32) | (Int.MaxValue - j).toLong
+      var g = groupSize
+      while g > 0 && groupKeys(g - 1) > key do
+        groupKeys(g) = groupKeys(g - 1)
+        g -= 1
+      groupKeys(g) = key
+      groupSize += 1
 
   private def ensureCapacity(n: Int): Unit =
     if boxMinX.length < n then

@@ -45,7 +45,7 @@ private[sims] final class ContactFinder:
         grid.gridSide = detector.gridSide
         grid.update(world.shapeBuffer, speculativeDistance)
         pairs.clear()
-        grid.findPairs(pairs)
+        grid.findPairs(pairs, inGridOrder = false)
         narrowphase.update(detector.detectionMethods, detector.collisionMethods)
         var i = 0
         while i < pairs.size do
