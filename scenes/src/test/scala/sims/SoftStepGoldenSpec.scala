@@ -27,5 +27,5 @@ class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
   }
 
   test("golden-mixed under SoftStep after 240 steps") {
-    soft("golden-mixed", 240) shouldBe "1daca2dc5faded46"
+    soft("golden-mixed", 240) shouldBe "4f9c41ade2f6ba2a"
   }

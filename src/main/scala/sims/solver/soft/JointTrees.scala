@@ -38,9 +38,13 @@ private[sims] final class JointTrees:
   private var nodeCount = 0
   private var nodeIsJoint = new Array[Boolean](0)
   private var nodeRef, nodeSize, nodeParent = new Array[Int](0)
-  // Per node, 3 x 3 blocks (row-major, stride 3): D, its inverse, and the block H(parent, node).
-  private var d, dInverse, toParent = new Array[Double](0)
+  // Per node, 3 x 3 blocks (row-major, stride 3): D, its inverse, and the Jacobian block
+  // between the node and its parent (k x 3: the joint's rows for the body).
+  private var d, dInverse, jacobian = new Array[Double](0)
   private var z, x = new Array[Double](0)
+  // Scratch of one elimination.
+  private val y = new Array[Double](2)
+  private val g = new Array[Double](9)
   // Graph building.
   private var unionParent, bodyJoints, groundJoints, touched = new Array[Int](0)
   private var bodyNode = new Array[Int](0)
@@ -159,7 +163,7 @@ private[sims] final class JointTrees:
       nodeIsJoint = new Array[Boolean](capacity)
       nodeRef = new Array[Int](capacity); nodeSize = new Array[Int](capacity); nodeParent = new Array[Int](capacity)
       d = new Array[Double](9 * capacity); dInverse = new Array[Double](9 * capacity)
-      toParent = new Array[Double](9 * capacity)
+      jacobian = new Array[Double](9 * capacity)
       z = new Array[Double](3 * capacity); x = new Array[Double](3 * capacity)
     java.util.Arrays.fill(bodyNode, 0, n, -1)
     if jointSeen.length < joints then jointSeen = new Array[Boolean](2 * joints)
@@ -224,8 +228,7 @@ private[sims] final class JointTrees:
   /** One exact pass over every tree: with the bias C / h (`useBias`) or without. */
   def solve(context: SoftContext, useBias: Boolean): Unit =
     if direct.nonEmpty then
-      val bodies = context.bodies
-      val state = bodies.state
+      val state = context.bodies.state
       var t = 0
       while t < direct.length do
         direct(t).rowsSoft(context, rows)
@@ -234,56 +237,11 @@ private[sims] final class JointTrees:
         positionError(2 * t) = rows.positionError(0)
         positionError(2 * t + 1) = rows.positionError(1)
         t += 1
-      // The blocks of H and the right side.
-      var node = 0
-      while node < nodeCount do
-        val o = 9 * node
-        java.util.Arrays.fill(d, o, o + 9, 0.0)
-        if nodeIsJoint(node) then
-          val joint = nodeRef(node)
-          val k = rowCount(joint)
-          var r = 0
-          while r < k do
-            val cdot = rowVelocity(joint, r, state, index1(joint), jacobian1) + rowVelocity(joint, r, state, index2(joint), jacobian2)
-            val bias = if useBias then positionError(2 * joint + r) * context.inverseH else 0.0
-            z(3 * node + r) = -(cdot + bias)
-            r += 1
-          // H(parent body, joint) = J(joint, that body)^T
-          val parent = nodeParent(node)
-          if parent >= 0 then
-            val side = if body1(joint) == nodeRef(parent) then jacobian1 else jacobian2
-            fillTransposed(side, 6 * joint, k, o)
-        else
-          val b = nodeRef(node)
-          d(o) = 1 / bodies.invMass(b); d(o + 4) = d(o); d(o + 8) = 1 / bodies.invI(b)
-          z(3 * node) = 0; z(3 * node + 1) = 0; z(3 * node + 2) = 0
-          val parent = nodeParent(node)
-          if parent >= 0 then
-            // H(parent joint, body) = J(joint, body)
-            val joint = nodeRef(parent)
-            val side = if body1(joint) == b then jacobian1 else jacobian2
-            System.arraycopy(side, 6 * joint, toParent, o, 6)
-        node += 1
-      // Leaves first: D_p -= H_pc D_c^-1 H_cp, z_p -= H_pc D_c^-1 z_c.
-      node = nodeCount - 1
-      while node >= 0 do
-        val n = nodeSize(node)
-        SmallMatrix.invert(d, 9 * node, n, dInverse, 9 * node)
-        val parent = nodeParent(node)
-        if parent >= 0 then
-          val np = nodeSize(parent)
-          SmallMatrix.eliminate(toParent, 9 * node, np, n, dInverse, 9 * node, d, 9 * parent, z, 3 * node, z, 3 * parent)
-        node -= 1
-      // Roots first: x_c = D_c^-1 (z_c - H_cp x_p).
-      node = 0
-      while node < nodeCount do
-        val n = nodeSize(node)
-        val parent = nodeParent(node)
-        if parent >= 0 then SmallMatrix.subtractTransposedProduct(toParent, 9 * node, nodeSize(parent), n, x, 3 * parent, z, 3 * node)
-        SmallMatrix.multiply(dInverse, 9 * node, n, z, 3 * node, x, 3 * node)
-        node += 1
+      setUp(context, state, useBias)
+      eliminate()
+      substitute()
       // Velocities change by dv; each joint's accumulated impulse by -y.
-      node = 0
+      var node = 0
       while node < nodeCount do
         if nodeIsJoint(node) then
           val accumulated = direct(nodeRef(node)).softImpulse
@@ -296,17 +254,133 @@ private[sims] final class JointTrees:
           state(k) += x(3 * node); state(k + 1) += x(3 * node + 1); state(k + 2) += x(3 * node + 2)
         node += 1
 
+  /** The blocks of H, the right side, and each node's Jacobian block with its parent (k x 3,
+    * row-major: a joint's rows for that body), in `jacobian(node)`.
+    */
+  private def setUp(context: SoftContext, state: Array[Double], useBias: Boolean): Unit =
+    val bodies = context.bodies
+    var node = 0
+    while node < nodeCount do
+      val o = 9 * node
+      if nodeIsJoint(node) then
+        val joint = nodeRef(node)
+        val k = rowCount(joint)
+        d(o) = 0; d(o + 1) = 0; d(o + 3) = 0; d(o + 4) = 0 // rigid: no softness on the diagonal
+        var r = 0
+        while r < k do
+          val cdot = rowVelocity(joint, r, state, index1(joint), jacobian1) + rowVelocity(joint, r, state, index2(joint), jacobian2)
+          val bias = if useBias then positionError(2 * joint + r) * context.inverseH else 0.0
+          z(3 * node + r) = -(cdot + bias)
+          r += 1
+        val parent = nodeParent(node)
+        if parent >= 0 then
+          val side = if body1(joint) == nodeRef(parent) then jacobian1 else jacobian2
+          System.arraycopy(side, 6 * joint, jacobian, o, 6)
+      else
+        val b = nodeRef(node)
+        val mass = 1 / bodies.invMass(b)
+        d(o) = mass; d(o + 1) = 0; d(o + 2) = 0
+        d(o + 3) = 0; d(o + 4) = mass; d(o + 5) = 0
+        d(o + 6) = 0; d(o + 7) = 0; d(o + 8) = 1 / bodies.invI(b)
+        z(3 * node) = 0; z(3 * node + 1) = 0; z(3 * node + 2) = 0
+        val parent = nodeParent(node)
+        if parent >= 0 then
+          val joint = nodeRef(parent)
+          val side = if body1(joint) == b then jacobian1 else jacobian2
+          System.arraycopy(side, 6 * joint, jacobian, o, 6)
+      node += 1
+
+  /** Leaves first: each node's D is final once its children are eliminated; it is inverted and
+    * eliminated into its parent: D_p -= H_pc D_c^-1 H_cp and z_p -= H_pc D_c^-1 z_c, where H_pc
+    * is J^T (3 x k) for a joint below a body and J (k x 3) for a body below a joint.
+    */
+  private def eliminate(): Unit =
+    var node = nodeCount - 1
+    while node >= 0 do
+      val o = 9 * node
+      val parent = nodeParent(node)
+      if nodeIsJoint(node) then
+        val k = nodeSize(node)
+        SmallMatrix.invert(d, o, k, dInverse, o)
+        if parent >= 0 then
+          val p = 9 * parent
+          // y = D^-1 z (k), G = D^-1 J (k x 3)
+          var r = 0
+          while r < k do
+            y(r) = dInverse(o + 3 * r) * z(3 * node) + (if k > 1 then dInverse(o + 3 * r + 1) * z(3 * node + 1) else 0.0)
+            var j = 0
+            while j < 3 do
+              g(3 * r + j) = dInverse(o + 3 * r) * jacobian(o + j) +
+                (if k > 1 then dInverse(o + 3 * r + 1) * jacobian(o + 3 + j) else 0.0)
+              j += 1
+            r += 1
+          // D_p -= J^T G, z_p -= J^T y
+          var i = 0
+          while i < 3 do
+            var j = 0
+            while j < 3 do
+              var sum = jacobian(o + i) * g(j)
+              if k > 1 then sum += jacobian(o + 3 + i) * g(3 + j)
+              d(p + 3 * i + j) -= sum
+              j += 1
+            var sum = jacobian(o + i) * y(0)
+            if k > 1 then sum += jacobian(o + 3 + i) * y(1)
+            z(3 * parent + i) -= sum
+            i += 1
+      else
+        SmallMatrix.invert(d, o, 3, dInverse, o)
+        if parent >= 0 then
+          val p = 9 * parent
+          val k = nodeSize(parent)
+          // F = J D^-1 (k x 3); D_p -= F J^T, z_p -= F z
+          var r = 0
+          while r < k do
+            var j = 0
+            while j < 3 do
+              g(3 * r + j) = jacobian(o + 3 * r) * dInverse(o + j) + jacobian(o + 3 * r + 1) * dInverse(o + 3 + j) +
+                jacobian(o + 3 * r + 2) * dInverse(o + 6 + j)
+              j += 1
+            r += 1
+          r = 0
+          while r < k do
+            var q = 0
+            while q < k do
+              d(p + 3 * r + q) -= g(3 * r) * jacobian(o + 3 * q) + g(3 * r + 1) * jacobian(o + 3 * q + 1) +
+                g(3 * r + 2) * jacobian(o + 3 * q + 2)
+              q += 1
+            z(3 * parent + r) -= g(3 * r) * z(3 * node) + g(3 * r + 1) * z(3 * node + 1) + g(3 * r + 2) * z(3 * node + 2)
+            r += 1
+      node -= 1
+
+  /** Roots first: x_c = D_c^-1 (z_c - H_cp x_p). */
+  private def substitute(): Unit =
+    var node = 0
+    while node < nodeCount do
+      val o = 9 * node
+      val n = nodeSize(node)
+      val parent = nodeParent(node)
+      if parent >= 0 then
+        val xp = 3 * parent
+        if nodeIsJoint(node) then
+          // z -= J x_p (k)
+          var r = 0
+          while r < n do
+            z(3 * node + r) -= jacobian(o + 3 * r) * x(xp) + jacobian(o + 3 * r + 1) * x(xp + 1) + jacobian(o + 3 * r + 2) * x(xp + 2)
+            r += 1
+        else
+          // z -= J^T x_p (3), J being the parent joint's k x 3 rows
+          val k = nodeSize(parent)
+          var i = 0
+          while i < 3 do
+            var sum = jacobian(o + i) * x(xp)
+            if k > 1 then sum += jacobian(o + 3 + i) * x(xp + 1)
+            z(3 * node + i) -= sum
+            i += 1
+      SmallMatrix.multiply(dInverse, o, n, z, 3 * node, x, 3 * node)
+      node += 1
+
   /** Row r of the joint's Jacobian for one body times that body's velocity. */
   private def rowVelocity(joint: Int, r: Int, state: Array[Double], body: Int, jacobian: Array[Double]): Double =
     val k = body * SoftBodies.Stride
     val o = 6 * joint + 3 * r
     jacobian(o) * state(k) + jacobian(o + 1) * state(k + 1) + jacobian(o + 2) * state(k + 2)
-
-  /** toParent(o) as the 3 x k transpose of the k x 3 block at jacobian(from). */
-  private def fillTransposed(jacobian: Array[Double], from: Int, k: Int, o: Int): Unit =
-    var r = 0
-    while r < k do
-      toParent(o + r) = jacobian(from + 3 * r)
-      toParent(o + 3 + r) = jacobian(from + 3 * r + 1)
-      toParent(o + 6 + r) = jacobian(from + 3 * r + 2)
-      r += 1
