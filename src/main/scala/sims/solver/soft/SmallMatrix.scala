@@ -1,8 +1,8 @@
 package sims.solver.soft
 
-/** The dense block arithmetic of [[JointTrees]]: matrices of at most 3 x 3 stored row-major
-  * with stride 3 at an offset of a Double array, vectors of at most 3 at an offset. No
-  * allocation.
+/** The dense block arithmetic [[JointTrees]] shares between its block shapes: inverting a
+  * block and multiplying a vector by one, for matrices of at most 3 x 3 stored row-major with
+  * stride 3 at an offset of a Double array. No allocation.
   */
 private[soft] object SmallMatrix:
   /** dst = src^-1 for the n x n block at src(so) (n from 1 to 3); singular blocks give 0. */
@@ -36,48 +36,6 @@ private[soft] object SmallMatrix:
         dst(dO + 6) = c13 * det
         dst(dO + 7) = (a12 * a31 - a11 * a32) * det
         dst(dO + 8) = (a11 * a22 - a12 * a21) * det
-
-  /** With L = H inverse (H the np x nc block at h(ho), inverse the nc x nc block at
-    * inverse(io)): the parent's block d(dpo) -= L H^T and vector z(zpo) -= L zc(zco).
-    */
-  def eliminate(h: Array[Double], ho: Int, np: Int, nc: Int, inverse: Array[Double], io: Int,
-      d: Array[Double], dpo: Int, zc: Array[Double], zco: Int, zp: Array[Double], zpo: Int): Unit =
-    var i = 0
-    while i < np do
-      // row i of L
-      var l0 = 0.0; var l1 = 0.0; var l2 = 0.0
-      var k = 0
-      while k < nc do
-        val hik = h(ho + 3 * i + k)
-        l0 += hik * inverse(io + 3 * k)
-        if nc > 1 then l1 += hik * inverse(io + 3 * k + 1)
-        if nc > 2 then l2 += hik * inverse(io + 3 * k + 2)
-        k += 1
-      var j = 0
-      while j < np do
-        var sum = l0 * h(ho + 3 * j)
-        if nc > 1 then sum += l1 * h(ho + 3 * j + 1)
-        if nc > 2 then sum += l2 * h(ho + 3 * j + 2)
-        d(dpo + 3 * i + j) -= sum
-        j += 1
-      var lz = l0 * zc(zco)
-      if nc > 1 then lz += l1 * zc(zco + 1)
-      if nc > 2 then lz += l2 * zc(zco + 2)
-      zp(zpo + i) -= lz
-      i += 1
-
-  /** z(zo) -= H^T x(xo), H the np x nc block at h(ho). */
-  def subtractTransposedProduct(h: Array[Double], ho: Int, np: Int, nc: Int, x: Array[Double], xo: Int,
-      z: Array[Double], zo: Int): Unit =
-    var k = 0
-    while k < nc do
-      var sum = 0.0
-      var i = 0
-      while i < np do
-        sum += h(ho + 3 * i + k) * x(xo + i)
-        i += 1
-      z(zo + k) -= sum
-      k += 1
 
   /** x(xo) = A z(zo) for the n x n block A at a(ao). */
   def multiply(a: Array[Double], ao: Int, n: Int, z: Array[Double], zo: Int, x: Array[Double], xo: Int): Unit =
