@@ -115,3 +115,8 @@ object Defaults:
     * m (10 linear slops).
     */
   val ContactPersistence: Double = 0.05
+
+  /** A contact whose load would press it deeper than this is made stiffer (up to 0.25 /
+    * substep), m.
+    */
+  val ContactLoadDepth: Double = 0.002

@@ -38,6 +38,8 @@ import sims.solver.soft.{ContactConstraints, SoftBodies, SoftWorkspace}
   * @param speculativeDistance contact points are made this far before shapes touch, m
   * @param contactPersistence a contact's manifold is kept (not computed again) while its bodies
   *   moved less than this relative to each other since it was computed, m; 0 computes every step
+  * @param contactLoadDepth a contact whose load would press it deeper than this is stiffened
+  *   (up to 0.25 / substep), m; 0 keeps every contact at `contactHertz`
   * @param directJoints whether joints that form trees (chains, ragdolls) are solved exactly by
   *   the linear-time direct solver, as rigid constraints; otherwise every joint is solved by
   *   soft Gauss-Seidel sweeps with `jointHertz`, as in Box2D v3
@@ -54,6 +56,7 @@ final case class SoftStep(
     linearSlop: Double = Defaults.LinearSlop,
     speculativeDistance: Double = Defaults.SpeculativeDistance,
     contactPersistence: Double = Defaults.ContactPersistence,
+    contactLoadDepth: Double = Defaults.ContactLoadDepth,
     directJoints: Boolean = true) extends Solver:
   if substeps < 1 then throw IllegalArgumentException(s"substeps must be at least 1, got $substeps")
   SoftStep.requirePositive("contactHertz", contactHertz)
@@ -66,6 +69,7 @@ final case class SoftStep(
   SoftStep.requirePositive("linearSlop", linearSlop)
   SoftStep.requireNonNegative("speculativeDistance", speculativeDistance)
   SoftStep.requireNonNegative("contactPersistence", contactPersistence)
+  SoftStep.requireNonNegative("contactLoadDepth", contactLoadDepth)
 
   def step(world: World): Unit =
     val workspace = world.workspace(classOf[SoftWorkspace], SoftWorkspace())
@@ -105,11 +109,8 @@ final case class SoftStep(
 
   private def prepare(workspace: SoftWorkspace, h: Double): Unit =
     val rate = 1 / h
-    val contactStiffness = math.min(contactHertz, 0.25 * rate)
-    workspace.contactSoftness.set(contactStiffness, contactDampingRatio, h)
-    workspace.staticSoftness.set(staticContactFactor * contactStiffness, contactDampingRatio, h)
-    ContactConstraints.prepare(workspace.table.current, workspace.bodies, workspace.contactSoftness,
-      workspace.staticSoftness)
+    workspace.stiffness.set(contactHertz, 0.25 * rate, contactDampingRatio, staticContactFactor, contactLoadDepth, h)
+    ContactConstraints.prepare(workspace.table.current, workspace.bodies, workspace.stiffness)
     val context = workspace.context
     context.bodies = workspace.bodies
     context.h = h

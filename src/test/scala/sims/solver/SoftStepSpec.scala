@@ -31,7 +31,8 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
       "restitutionThreshold" -> (() => SoftStep(restitutionThreshold = -1)),
       "linearSlop" -> (() => SoftStep(linearSlop = 0)),
       "speculativeDistance" -> (() => SoftStep(speculativeDistance = -0.1)),
-      "contactPersistence" -> (() => SoftStep(contactPersistence = Double.NaN)))
+      "contactPersistence" -> (() => SoftStep(contactPersistence = Double.NaN)),
+      "contactLoadDepth" -> (() => SoftStep(contactLoadDepth = -0.001)))
     for (name, make) <- bad do
       val error = intercept[IllegalArgumentException](make())
       error.getMessage should include(name)

@@ -20,10 +20,11 @@ import sims.solver.soft.ContactTable.*
 private[sims] object ContactConstraints:
 
   /** Computes what stays fixed during the step: effective masses, the normal relative
-    * velocity before the step, and the softness (stiffer against fixed bodies). The arms and
-    * separations are the collision stage's.
+    * velocity before the step, and the softness (stiffer against fixed bodies, and stiffened
+    * under a heavy load, see [[ContactStiffness]]). The arms and separations are the collision
+    * stage's.
     */
-  def prepare(contacts: Contacts, bodies: SoftBodies, softness: Softness, staticSoftness: Softness): Unit =
+  def prepare(contacts: Contacts, bodies: SoftBodies, stiffness: ContactStiffness): Unit =
     val hot = contacts.hot
     val cold = contacts.cold
     val state = bodies.state
@@ -34,10 +35,6 @@ private[sims] object ContactConstraints:
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
       val mB = bodies.invMass(b); val iB = bodies.invI(b)
       val k = contacts.offset(c)
-      val soft = if mA == 0 || mB == 0 then staticSoftness else softness
-      hot(k + BiasRate) = soft.biasRate
-      hot(k + MassScale) = soft.massScale
-      hot(k + ImpulseScale) = soft.impulseScale
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val tx = -ny; val ty = nx
       val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
@@ -58,6 +55,7 @@ private[sims] object ContactConstraints:
         val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
         hot(q + RelativeVelocity) = dvx * nx + dvy * ny
         p += 1
+      stiffness.set(contacts, c, mA == 0 || mB == 0)
       c += 1
 
   /** Applies each point's accumulated impulses (from the last step, then from the substeps). */

@@ -17,8 +17,8 @@ private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
   val finder: ContactFinder = ContactFinder()
   /** What the joints read. */
   val context: SoftContext = SoftContext()
-  /** Softness of contacts between two moving bodies, and of contacts with a fixed body. */
-  val contactSoftness, staticSoftness: Softness = Softness()
+  /** The contacts' softness for the step. */
+  val stiffness: ContactStiffness = ContactStiffness()
   /** The joints solved as constraints, and those whose forces are applied in each substep. */
   val constraintJoints, forceJoints: ArrayBuffer[Joint] = ArrayBuffer.empty[Joint]
   /** The direct solver of joint trees, and the joints left to the iterative one. */

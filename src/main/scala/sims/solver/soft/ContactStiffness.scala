@@ -1,0 +1,51 @@
+package sims.solver.soft
+
+import sims.solver.soft.ContactTable.*
+
+/** The softness of each contact for one step. A contact is as stiff as `hertz` (twice that
+  * against a fixed body, `staticFactor`), as SOFTSTEP.md says, except where its load would press
+  * it deeper: a soft contact carrying the force F between bodies of effective mass m settles F /
+  * (m omega^2) into the overlap, so a light box under a heavy one sinks in (a box 100 times
+  * heavier on two light ones: 11 cm at 30 Hz). Such a contact is made stiff enough to hold its
+  * load within `loadDepth` (omega^2 = F / (m loadDepth)), never stiffer than `maximumHertz`
+  * (0.25 / substep: stiffer contacts jitter in piles). Its load is known from warm starting:
+  * the force of its accumulated impulse over the last step.
+  */
+private[sims] final class ContactStiffness:
+  private val normal = Softness()
+  private val static = Softness()
+  private val stiffened = Softness()
+  private var h, zeta, omega, maximumOmega, staticFactor, loadDepth = 0.0
+
+  /** Sets the step's stiffness: `hertz` (capped at `maximumHertz`), damping `zeta`, substep `h`. */
+  def set(hertz: Double, maximumHertz: Double, zeta: Double, staticFactor: Double, loadDepth: Double, h: Double): Unit =
+    this.h = h
+    this.zeta = zeta
+    this.staticFactor = staticFactor
+    this.loadDepth = loadDepth
+    omega = 2 * math.Pi * math.min(hertz, maximumHertz)
+    maximumOmega = 2 * math.Pi * maximumHertz
+    normal.set(omega / (2 * math.Pi), zeta, h)
+    static.set(staticFactor * omega / (2 * math.Pi), zeta, h)
+
+  /** Writes the softness of contact c (against a fixed body if `isStatic`) into its hot block. */
+  def set(contacts: Contacts, c: Int, isStatic: Boolean): Unit =
+    val factor = if isStatic then staticFactor else 1.0
+    var soft = if isStatic then static else normal
+    if loadDepth > 0 then
+      // The load as an acceleration of the effective mass: F / m = (impulse / h) / normalMass.
+      val hot = contacts.hot
+      var load = 0.0
+      var p = 0
+      while p < contacts.pointCount(c) do
+        val q = contacts.hotPoint(c, p)
+        if hot(q + NormalMass) > 0 then load = math.max(load, hot(q + NormalImpulse) / (h * hot(q + NormalMass)))
+        p += 1
+      val needed = math.min(math.sqrt(load / loadDepth), factor * maximumOmega)
+      if needed > factor * omega then
+        stiffened.set(needed / (2 * math.Pi), zeta, h)
+        soft = stiffened
+    val k = contacts.offset(c)
+    contacts.hot(k + BiasRate) = soft.biasRate
+    contacts.hot(k + MassScale) = soft.massScale
+    contacts.hot(k + ImpulseScale) = soft.impulseScale
