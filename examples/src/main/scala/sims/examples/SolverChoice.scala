@@ -22,8 +22,3 @@ enum SolverChoice(val argument: String, val label: String):
 object SolverChoice:
   /** The choice named `argument` on the command line (`classic` or `soft`, any case), if any. */
   def named(argument: String): Option[SolverChoice] = values.find(_.argument.equalsIgnoreCase(argument))
-
-  /** The choice a solver is of: the soft step's (any parameters) or else the classic step's. */
-  def of(solver: Solver): SolverChoice = solver match
-    case _: SoftStep => Soft
-    case _ => Classic

@@ -101,8 +101,8 @@ object HeadlessRun:
       s"(${result.frames} frames), ${pngFile.getPath}, ${csvFile.getPath} (${result.rows} rows)")
     result
 
-  /** Simulates `scene` for `seconds` twice in step, with the classic step and with the soft
-    * step, and writes `<name>-compare.gif` and `<name>-compare.png` into `directory`: the
+  /** Simulates `scene` for `seconds` twice in lockstep, one world with the classic step and
+    * one with the soft step, and writes `<name>-compare.gif` and `<name>-compare.png` into `directory`: the
     * classic step on the left, the soft step on the right, each labelled.
     */
   def compare(scene: Scene, seconds: Double, directory: File, out: PrintStream = System.out,

@@ -9,10 +9,9 @@ import sims.dynamics.joints.MouseJoint
 import sims.scenes.{Scene, Staged}
 
 /** The viewer's drawing area: owns the running scene, steps it on request with the chosen
-  * solver and paints it with the shared [[sims.examples.render.Renderer]]. Dragging a free body pulls it with a
-  * [[sims.dynamics.joints.MouseJoint]]; dragging
-  * empty space pans the view; the mouse wheel zooms about the pointer. It needs no window, so
-  * tests paint it off-screen.
+  * solver and paints it with the shared [[sims.examples.render.Renderer]]. Dragging a free body
+  * pulls it with a [[sims.dynamics.joints.MouseJoint]]; dragging empty space pans the view; the
+  * mouse wheel zooms about the pointer. It needs no window, so tests paint it off-screen.
   */
 final class SimulationPanel(initialScene: Scene, initialSolver: SolverChoice = SolverChoice.Classic) extends JPanel:
   private var _scene = initialScene
