@@ -18,6 +18,11 @@ object Dyn4jBuilder:
         val t = b.getTransform
         Seq(t.getTranslationX, t.getTranslationY, t.getRotationAngle)
       }.toArray
+    def dynamicVelocities: Array[Double] =
+      dynamic.flatMap { b =>
+        val v = b.getLinearVelocity
+        Seq(v.x, v.y, b.getAngularVelocity)
+      }.toArray
     def jointLengths: Array[Double] =
       val out = Array.newBuilder[Double]
       world.getJoints.forEach {

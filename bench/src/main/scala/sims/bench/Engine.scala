@@ -1,6 +1,7 @@
 package sims.bench
 
 import sims.scenes.{LayoutScene, Scene}
+import sims.solver.{ClassicStep, Solver, SoftStep}
 
 /** One scene built in one engine: stepped by the benchmark, inspected by the sanity check. */
 trait EngineScene:
@@ -10,20 +11,34 @@ trait EngineScene:
   /** x, y and rotation of every free body, in the order the scene lists them. */
   def dynamicStates: Array[Double]
 
+  /** x and y velocity and angular velocity of every free body, in the order the scene lists them. */
+  def dynamicVelocities: Array[Double]
+
   /** Current distance of the centres each joint connects, in order. */
   def jointLengths: Array[Double]
 
-/** The engines compared. */
+/** The engines compared: SiMS with each of its two solvers, and the peers. */
 enum Engine(val label: String):
+  /** SiMS with its default solver, `ClassicStep` (SiMS 1.2's step). */
   case Sims extends Engine("SiMS")
+  /** SiMS with `SoftStep()`, the soft step with its defaults. */
+  case SimsSoft extends Engine("SiMS-soft")
+  /** jBox2D 2.2.1.1 (Java port of Box2D 2.2). */
   case JBox2D extends Engine("jBox2D")
+  /** dyn4j 5.0.2. */
   case Dyn4j extends Engine("dyn4j")
 
+  /** The solver of a SiMS engine (a fresh value each time), none for a peer. */
+  def solver: Option[Solver] = this match
+    case Sims => Some(ClassicStep)
+    case SimsSoft => Some(SoftStep())
+    case _ => None
+
   /** Builds the scene in this engine: any scene in SiMS, a layout in the peers. */
-  def build(scene: Scene): EngineScene = (this, scene) match
-    case (Sims, _) => SimsBuilder.build(scene)
-    case (JBox2D, laidOut: LayoutScene) => JBox2DBuilder.build(laidOut.layout)
-    case (Dyn4j, laidOut: LayoutScene) => Dyn4jBuilder.build(laidOut.layout)
+  def build(scene: Scene): EngineScene = (solver, this, scene) match
+    case (Some(sims), _, _) => SimsBuilder.build(scene, sims)
+    case (_, JBox2D, laidOut: LayoutScene) => JBox2DBuilder.build(laidOut.layout)
+    case (_, Dyn4j, laidOut: LayoutScene) => Dyn4jBuilder.build(laidOut.layout)
     case _ => throw IllegalArgumentException(s"${scene.name} is not a layout: $label cannot build it")
 
 object Engine:
@@ -32,9 +47,15 @@ object Engine:
     values.find(e => e.label.equalsIgnoreCase(name) || e.toString.equalsIgnoreCase(name))
       .getOrElse(throw IllegalArgumentException(s"unknown engine $name"))
 
-  /** The engines that run a scene: all of them for a layout, SiMS alone for any other scene
-    * (e.g. the original's BallStack).
+  /** SiMS's two solvers. */
+  val sims: Seq[Engine] = Seq(Sims, SimsSoft)
+
+  /** The peers. */
+  val peers: Seq[Engine] = Seq(JBox2D, Dyn4j)
+
+  /** The engines that run a scene: all of them for a layout, SiMS alone (with both solvers)
+    * for any other scene (e.g. the original's BallStack).
     */
   def forScene(scene: Scene): Seq[Engine] = scene match
     case _: LayoutScene => values.toSeq
-    case _ => Seq(Sims)
+    case _ => sims

@@ -15,6 +15,11 @@ object JBox2DBuilder:
     def step(): Unit = world.step(dt, Settings.Iterations, Settings.Iterations)
     def dynamicStates: Array[Double] =
       dynamic.flatMap(b => Seq(b.getPosition.x.toDouble, b.getPosition.y.toDouble, b.getAngle.toDouble)).toArray
+    def dynamicVelocities: Array[Double] =
+      dynamic.flatMap { b =>
+        val v = b.getLinearVelocity
+        Seq(v.x.toDouble, v.y.toDouble, b.getAngularVelocity.toDouble)
+      }.toArray
     def jointLengths: Array[Double] =
       val out = Array.newBuilder[Double]
       var j = world.getJointList

@@ -25,4 +25,4 @@ object Quick:
       for _ <- 0 until steps do built.step()
       val ms = (System.nanoTime() - start) / 1e6 / steps
       val sanity = Sanity.check(scene, built)
-      println(f"$name%-14s ${engine.label}%-7s $ms%9.3f ms/step  sane=${sanity.ok}%-5s ${sanity.detail}")
+      println(f"$name%-14s ${engine.label}%-9s $ms%9.3f ms/step  sane=${sanity.ok}%-5s ${sanity.detail}")

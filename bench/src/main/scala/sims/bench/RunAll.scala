@@ -8,8 +8,9 @@ import org.openjdk.jmh.runner.Runner
 import org.openjdk.jmh.runner.options.{OptionsBuilder, TimeValue}
 import scala.jdk.CollectionConverters.*
 
-/** Runs every scene in every engine with the same JMH settings in one run, with the GC
-  * profiler, and writes a Markdown table to `bench/results/<date>.md`.
+/** Runs every scene in every engine (SiMS with the classic and with the soft step, jBox2D,
+  * dyn4j) with the same JMH settings in one run, with the GC profiler, and writes a Markdown
+  * table to `bench/results/<date>.md`.
   *
   * Arguments (all optional): scene names to run (default: all), `--forks N` (default 1),
   * `--iterations N` measurement iterations of 1 s (default 5), `--warmup N` warm-up iterations

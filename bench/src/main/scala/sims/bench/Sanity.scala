@@ -1,6 +1,6 @@
 package sims.bench
 
-import sims.scenes.{BallStack, Ballpit, BoxPyramid, Layout, Outline, Region, Scene, SwingingChain}
+import sims.scenes.{BallStack, Ballpit, BoxPyramid, BoxStack, HeavyStack, Layout, Outline, Region, Scene, SwingingChain}
 
 /** Checks that a scene still looks like what it should after a run, with the same criteria
   * for every engine, so that a fast wrong answer cannot win. Containers, initial positions and
@@ -12,9 +12,9 @@ object Sanity:
 
   /** Slack allowed beyond a container's inner faces, m. */
   val ContainerTolerance: Double = 0.05
-  /** A pyramid box may move this far (one box side) from its initial centre and still stand, m. */
+  /** A pyramid or stack box may move this far (one box side) from its initial centre and still stand, m. */
   val PyramidDrift: Double = 0.5
-  /** A standing pyramid box is turned by at most this much from a multiple of 90 degrees, rad. */
+  /** A standing pyramid or stack box is turned by at most this much from a multiple of 90 degrees, rad. */
   val PyramidTilt: Double = 0.2
   /** A chain joint may differ from its length by this fraction: a quarter of a link. (Both
     * peers' rigid distance joints, at 10 iterations without sub-stepping, stretch by up to
@@ -28,6 +28,8 @@ object Sanity:
     if states.exists(d => d.isNaN || d.isInfinite) then Result(false, "NaN or infinite body state")
     else scene match
       case pyramid: BoxPyramid => standing(states, pyramid.layout)
+      case stack: BoxStack => standing(states, stack.layout)
+      case HeavyStack => standing(states, HeavyStack.layout)
       case chain: SwingingChain => joined(built.jointLengths, chain.layout)
       case pit: Ballpit =>
         val radii = pit.layout.freeBodies.map(i => pit.layout.bodies(i).outline match

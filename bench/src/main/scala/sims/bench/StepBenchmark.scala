@@ -12,7 +12,7 @@ import scala.compiletime.uninitialized
 @BenchmarkMode(Array(Mode.AverageTime))
 @OutputTimeUnit(TimeUnit.MICROSECONDS)
 class StepBenchmark:
-  /** Engine label: SiMS, jBox2D or dyn4j. */
+  /** Engine label: SiMS (the classic step), SiMS-soft (the soft step), jBox2D or dyn4j. */
   @Param(Array("SiMS"))
   var engine: String = uninitialized
 

@@ -4,8 +4,9 @@ import java.io.File
 import sims.examples.headless.HeadlessRun
 import sims.scenes.{Scene, Scenes}
 
-/** Command line of the examples: `[Scene] [--seconds S] [--out DIR]` runs a scene headless,
-  * `--gui [Scene]` opens the viewer, `--list` lists the scenes.
+/** Command line of the examples: `[Scene] [--seconds S] [--out DIR] [--solver classic|soft]`
+  * runs a scene headless, `--compare` runs it under both solvers side by side, `--gui [Scene]`
+  * opens the viewer, `--list` lists the scenes.
   */
 object Main:
   /** Simulated seconds of a headless run unless `--seconds` says otherwise. */
@@ -13,21 +14,40 @@ object Main:
   /** Output directory unless `--out` says otherwise. */
   val DefaultOut = "out"
 
-  /** Parsed command line. */
+  /** Parsed command line.
+    *
+    * @param solver the solver of a headless run or the viewer's first one
+    * @param compare run headless under both solvers, side by side in one picture
+    */
   final case class Options(scene: Option[String] = None, seconds: Double = DefaultSeconds,
-      out: File = File(DefaultOut), gui: Boolean = false, list: Boolean = false, help: Boolean = false)
+      out: File = File(DefaultOut), gui: Boolean = false, list: Boolean = false, help: Boolean = false,
+      solver: SolverChoice = SolverChoice.Classic, compare: Boolean = false)
 
   /** Usage text. */
   val Usage: String =
-    """usage: examples/run [Scene] [--seconds S] [--out DIR]   simulate headless, write GIF, PNG and CSV
-      |       examples/run --gui [Scene]                      open the interactive viewer
-      |       examples/run --list                             list the scenes""".stripMargin
+    """usage: examples/run [Scene] [--seconds S] [--out DIR] [--solver classic|soft]
+      |                                        simulate headless, write GIF, PNG and CSV
+      |       examples/run [Scene] --compare [--seconds S] [--out DIR]
+      |                                        both solvers side by side: <scene>-compare.gif and .png
+      |       examples/run --gui [Scene] [--solver classic|soft]
+      |                                        open the interactive viewer
+      |       examples/run --list              list the scenes
+      |The solver is SiMS's own step (classic, the default) or the soft step (soft).""".stripMargin
 
   /** Parses the arguments; Left holds an error message. */
   def parse(arguments: Seq[String]): Either[String, Options] =
     def loop(rest: List[String], options: Options): Either[String, Options] = rest match
-      case Nil => Right(options)
+      case Nil =>
+        if options.compare && options.gui then Left("--compare writes files: it cannot open the viewer (--gui)")
+        else Right(options)
       case "--gui" :: tail => loop(tail, options.copy(gui = true))
+      case "--compare" :: tail =>
+        if arguments.contains("--solver") then Left("--compare runs both solvers: leave out --solver")
+        else loop(tail, options.copy(compare = true))
+      case "--solver" :: value :: tail =>
+        SolverChoice.named(value) match
+          case Some(choice) => loop(tail, options.copy(solver = choice))
+          case None => Left(s"--solver is ${SolverChoice.values.map(_.argument).mkString(" or ")}, got '$value'")
       case "--list" :: tail => loop(tail, options.copy(list = true))
       case ("--help" | "-h") :: tail => loop(tail, options.copy(help = true))
       case "--seconds" :: value :: tail =>
@@ -35,7 +55,7 @@ object Main:
           case Some(seconds) => loop(tail, options.copy(seconds = seconds))
           case None => Left(s"--seconds needs a number of seconds at least 0, got '$value'")
       case "--out" :: value :: tail => loop(tail, options.copy(out = File(value)))
-      case ("--seconds" | "--out") :: Nil => Left(s"${rest.head} needs a value")
+      case ("--seconds" | "--out" | "--solver") :: Nil => Left(s"${rest.head} needs a value")
       case flag :: _ if flag.startsWith("--") => Left(s"unknown option $flag")
       case name :: tail =>
         if options.scene.isDefined then Left(s"only one scene may be named, got ${options.scene.get} and $name")
@@ -70,10 +90,11 @@ object Main:
           if java.awt.GraphicsEnvironment.isHeadless then
             System.err.println("the viewer needs a display; without one, run a scene headless: examples/run " + scene.name)
             sys.exit(1)
-          viewer.Viewer.open(scene)
+          viewer.Viewer.open(scene, options.solver)
         else
           // No window is ever opened here: headless mode also works on machines without a display.
           System.setProperty("java.awt.headless", "true")
           if options.scene.isEmpty then
             println(s"Scenes:\n$listing\n\nNo scene named, running ${scene.name} (see --help).\n")
-          HeadlessRun.run(scene, options.seconds, options.out)
+          if options.compare then HeadlessRun.compare(scene, options.seconds, options.out)
+          else HeadlessRun.run(scene, options.seconds, options.out, solver = options.solver)

@@ -18,6 +18,18 @@ class MainSpec extends AnyFunSuite:
     assert(parse(Seq("--gui")) == Right(Options(gui = true)))
     assert(parse(Seq("--gui", "Cannon")) == Right(Options(scene = Some("Cannon"), gui = true)))
 
+  test("the solver: classic unless --solver soft; --compare runs both, headless only"):
+    assert(parse(Seq("Pyramid", "--solver", "soft")) == Right(Options(scene = Some("Pyramid"), solver = SolverChoice.Soft)))
+    assert(parse(Seq("--solver", "classic")) == Right(Options()))
+    assert(parse(Seq("--gui", "--solver", "Soft")) == Right(Options(gui = true, solver = SolverChoice.Soft)))
+    assert(parse(Seq("Pyramid", "--compare", "--seconds", "10", "--out", "docs/images")) ==
+      Right(Options(scene = Some("Pyramid"), seconds = 10, out = File("docs/images"), compare = true)))
+    assert(parse(Seq("--solver", "fast")).isLeft)
+    assert(parse(Seq("--solver")).isLeft)
+    assert(parse(Seq("--compare", "--solver", "soft")).isLeft)
+    assert(parse(Seq("--solver", "soft", "--compare")).isLeft)
+    assert(parse(Seq("--compare", "--gui")).isLeft)
+
   test("bad arguments are reported"):
     assert(parse(Seq("--seconds", "soon")).isLeft)
     assert(parse(Seq("--seconds", "-1")).isLeft)

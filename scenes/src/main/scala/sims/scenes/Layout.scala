@@ -19,7 +19,7 @@ enum Outline:
   *   values, so its shapes get the square root: the product is then the same mean.
   * @param restitution the shape's coefficient: the peers give a pair the larger value, SiMS
   *   (square roots, as for friction) the geometric mean; the same when the values are equal,
-  *   as in every layout here.
+  *   as in every layout here (a [[Drop]] gives both its shapes the pair's value).
   * @param noCollideGroup 0: collides with every other body; g > 0: with none of group g
   *   (as Box2D's negative group index -g).
   */

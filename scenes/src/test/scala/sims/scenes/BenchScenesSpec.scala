@@ -66,6 +66,50 @@ class BenchScenesSpec extends AnyFunSuite with Matchers:
     layout.joints.foreach(j => layout.length(j) shouldBe 0.2 +- 1e-12)
   }
 
+  test("the quality scenes are found by name: stack-N, heavy-stack and drop-eE") {
+    BenchScenes.find("stack-12") shouldBe Some(BoxStack(12))
+    BenchScenes.find("Heavy-Stack") shouldBe Some(HeavyStack)
+    BenchScenes.find("drop-e0.5") shouldBe Some(Drop(0.5))
+    BenchScenes.find("drop-e1") shouldBe Some(Drop(1))
+    BenchScenes.find("drop-e0") shouldBe Some(Drop(0))
+    for name <- Seq("stack-0", "drop-e1.5", "drop-e", "drop-0.5", "drop-e.5") do
+      withClue(name)(BenchScenes.find(name) shouldBe None)
+    BenchScenes.quality.map(_.name) shouldBe Seq("pyramid-20", "stack-12", "chain-100", "ballpit-2000", "ballpit-4000",
+      "heavy-stack", "drop-e1", "drop-e0.5", "drop-e0")
+    for scene <- BenchScenes.quality do Scenes.find(scene.name) shouldBe Some(scene)
+  }
+
+  test("stack-N: the ground and N boxes of 0.5 m straight up, each on the one below, shifted by millimetres") {
+    val layout = BoxStack(12).layout
+    layout.bodies.size shouldBe 13
+    layout.bodies.head.fixed shouldBe true
+    val boxes = layout.bodies.tail
+    boxes.map(_.outline).distinct shouldBe Seq(Outline.Box(0.25, 0.25))
+    boxes.map(_.centre.y) shouldBe (0 until 12).map(0.25 + 0.5 * _)
+    boxes.map(_.centre.x) shouldBe (0 until 12).map(i => 0.002 * ((i * 7) % 5 - 2))
+    boxes.map(_.centre.x).distinct.size shouldBe 5
+    boxes.map(b => (b.density, b.friction, b.restitution)).distinct shouldBe Seq((1.0, 0.5, 0.0))
+  }
+
+  test("heavy-stack: three boxes stacked as in stack-3, the top one 100 times denser") {
+    val layout = HeavyStack.layout
+    layout.bodies.map(_.centre) shouldBe BoxStack(3).layout.bodies.map(_.centre)
+    layout.bodies.tail.map(_.density) shouldBe Seq(1.0, 1.0, 100.0)
+    val world = HeavyStack.build().world
+    world.bodies(3).mass shouldBe 100 * world.bodies(2).mass +- 1e-9
+  }
+
+  test("drop-eE: a ball 1 m above the ground, the pair's restitution E in SiMS as in the peers (max of equal values)") {
+    for e <- Seq(0.0, 0.5, 1.0) do
+      val layout = Drop(e).layout
+      layout.bodies.map(_.restitution) shouldBe Seq(e, e)
+      val ball = layout.bodies(1)
+      ball.outline shouldBe Outline.Circle(Drop.Radius)
+      ball.centre.y - Drop.Radius shouldBe 1.0
+      val shapes = Drop(e).build().world.bodies.map(_.shapes.head)
+      (shapes(0).restitution * shapes(1).restitution) shouldBe e +- 1e-15
+  }
+
   test("every standard scene builds a SiMS world with the layout's bodies") {
     for case scene: LayoutScene <- BenchScenes.standard.filterNot(_.name == "ballpit-16000") do
       scene.build().world.bodies.size shouldBe scene.layout.bodies.size

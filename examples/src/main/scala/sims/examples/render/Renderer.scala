@@ -26,13 +26,16 @@ object Renderer:
   val RailColour: Color = Color(0xb0aa98)
   /** Colour of contact points and normals (and of the mouse's pull). */
   val ContactColour: Color = Color(0xd00000)
+  /** Colour of the soft step's speculative contact points (shapes not touching yet). */
+  val SpeculativeColour: Color = Color(0xf0a0a0)
   /** Colour of bounding boxes. */
   val BoxColour: Color = Color(0x2a9d8f)
   /** Colour of the broadphase grid. */
   val GridColour: Color = Color(0xd8d3c4)
   /** Every colour drawn without smoothing: the palette of the GIF frames. */
   val colours: IndexedSeq[Color] =
-    (IndexedSeq(Background, FixedFill, FixedFill.darker(), JointColour, RailColour, ContactColour, BoxColour, GridColour) ++
+    (IndexedSeq(Background, FixedFill, FixedFill.darker(), JointColour, RailColour, ContactColour, SpeculativeColour,
+      BoxColour, GridColour) ++
       Palette ++ Palette.map(_.darker())).distinct
 
   /** Below this many pixels per grid cell the grid is not drawn (it would fill the picture). */
@@ -168,13 +171,17 @@ object Renderer:
     g.setStroke(BasicStroke(1f))
     g.draw(boxPath(shape, viewport))
 
+  /** The contacts of the solver's last step (`world.contacts`, either solver's): points and
+    * normals; speculative points (the soft step's, separation above 0) in a lighter colour.
+    */
   private def drawContacts(g: Graphics2D, world: World, viewport: Viewport): Unit =
     g.setStroke(BasicStroke(1.5f))
-    g.setColor(ContactColour)
     val normalPixels = 14.0
-    for collision <- world.collisions do
-      val n = collision.normal
-      for p <- collision.points do
+    for contact <- world.contacts do
+      val n = contact.normal
+      for i <- contact.points.indices do
+        val p = contact.points(i)
+        g.setColor(if contact.separations(i) > 0 then SpeculativeColour else ContactColour)
         val px = viewport.pixelX(p.x); val py = viewport.pixelY(p.y)
         g.fill(Ellipse2D.Double(px - 2.5, py - 2.5, 5, 5))
         g.draw(Line2D.Double(px, py, px + n.x * normalPixels, py - n.y * normalPixels))

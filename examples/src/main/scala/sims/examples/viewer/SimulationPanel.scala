@@ -3,19 +3,20 @@ package sims.examples.viewer
 import java.awt.{Dimension, Graphics, Graphics2D}
 import java.awt.event.{MouseAdapter, MouseEvent, MouseWheelEvent}
 import javax.swing.JPanel
+import sims.examples.SolverChoice
 import sims.examples.render.{RenderOptions, Renderer, Viewport}
 import sims.dynamics.joints.MouseJoint
 import sims.scenes.{Scene, Staged}
 
-/** The viewer's drawing area: owns the running scene, steps it on request and paints it with
-  * the shared [[sims.examples.render.Renderer]]. Dragging a free body pulls it with a
-  * [[sims.dynamics.joints.MouseJoint]]; dragging
-  * empty space pans the view; the mouse wheel zooms about the pointer. It needs no window, so
-  * tests paint it off-screen.
+/** The viewer's drawing area: owns the running scene, steps it on request with the chosen
+  * solver and paints it with the shared [[sims.examples.render.Renderer]]. Dragging a free body
+  * pulls it with a [[sims.dynamics.joints.MouseJoint]]; dragging empty space pans the view; the
+  * mouse wheel zooms about the pointer. It needs no window, so tests paint it off-screen.
   */
-final class SimulationPanel(initialScene: Scene) extends JPanel:
+final class SimulationPanel(initialScene: Scene, initialSolver: SolverChoice = SolverChoice.Classic) extends JPanel:
   private var _scene = initialScene
-  private var _staged: Staged = initialScene.build()
+  private var _solver = initialSolver
+  private var _staged: Staged = build(initialScene)
   private var _viewport: Viewport = Viewport.fit(initialScene.view, 800, 600)
   private var lastStepNanos = 0L
   // Until the user zooms or pans, the view keeps showing the scene's whole view at any panel size.
@@ -38,6 +39,23 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
   /** The running world and action of the scene. */
   def staged: Staged = _staged
 
+  /** The solver stepping the world (and every world loaded or reset after). */
+  def solver: SolverChoice = _solver
+
+  /** Switches the running world to `choice`'s solver, from its next step on; scenes loaded or
+    * reset later start with it too.
+    */
+  def solver_=(choice: SolverChoice): Unit =
+    _solver = choice
+    _staged.world.solver = choice.solver
+    repaint()
+
+  /** A fresh build of `scene`, stepped by the chosen solver. */
+  private def build(scene: Scene): Staged =
+    val built = scene.build()
+    built.world.solver = _solver.solver
+    built
+
   /** The current view (sized to the panel when painted). */
   def viewport: Viewport = _viewport
 
@@ -45,7 +63,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
   def load(newScene: Scene): Unit =
     dragJoint = None
     _scene = newScene
-    _staged = newScene.build()
+    _staged = build(newScene)
     lastStepNanos = 0
     viewMoved = false
     _viewport = Viewport.fit(newScene.view, math.max(1, getWidth), math.max(1, getHeight))
@@ -54,7 +72,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
   /** Rebuilds the current scene from scratch, keeping the view. */
   def reset(): Unit =
     dragJoint = None
-    _staged = _scene.build()
+    _staged = build(_scene)
     lastStepNanos = 0
     repaint()
 
@@ -70,16 +88,20 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
     _staged.action.foreach(_.run())
     repaint()
 
-  /** The text of the info panel: counts, time and the last step's duration. */
+  /** The text of the info panel: solver, counts, time and the last step's duration. Collisions
+    * are the pairs in contact after the solver's last step, contacts their points (the soft
+    * step's count its speculative ones).
+    */
   def info: String =
     val world = _staged.world
-    val contacts = world.collisions.map(_.points.size).sum
+    val contacts = world.contacts
     s"""Scene:      ${_scene.name}
+       |Solver:     ${_solver.label}
        |Bodies:     ${world.bodies.length}
        |Shapes:     ${world.shapes.length}
        |Joints:     ${world.joints.length}
-       |Collisions: ${world.collisions.length}
-       |Contacts:   $contacts
+       |Collisions: ${contacts.length}
+       |Contacts:   ${contacts.map(_.points.size).sum}
        |Time:       ${"%.3f".format(world.time)} s
        |Step time:  ${"%.3f".format(lastStepNanos / 1e6)} ms
        |Zoom:       ${"%.1f".format(_viewport.scale)} px/m""".stripMargin
@@ -87,7 +109,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
   /** Options for the renderer from the toggles. */
   def renderOptions: RenderOptions =
     RenderOptions(contacts = showContacts, boxes = showBoxes, grid = showGrid,
-      caption = f"${_scene.name}  t = ${_staged.world.time}%.2f s")
+      caption = f"${_scene.name}  ${_solver.label}  t = ${_staged.world.time}%.2f s")
 
   override def paintComponent(graphics: Graphics): Unit =
     super.paintComponent(graphics)

@@ -3,16 +3,20 @@ package sims.examples.viewer
 import java.awt.{BorderLayout, Font}
 import java.awt.event.ActionEvent
 import javax.swing.{BorderFactory, BoxLayout, JButton, JCheckBox, JComboBox, JFrame, JPanel, JTextArea, SwingUtilities, Timer, WindowConstants}
+import sims.examples.SolverChoice
 import sims.scenes.{Scene, Scenes}
 
-/** The interactive viewer: a scene chooser, start / stop / step / reset, the scene's action,
-  * overlay toggles and an info panel around a [[SimulationPanel]].
+/** The interactive viewer: a scene chooser, a solver chooser (switching applies to the running
+  * world), start / stop / step / reset, the scene's action, overlay toggles and an info panel
+  * around a [[SimulationPanel]].
   */
-final class ViewerControls(initialScene: Scene) extends JPanel(BorderLayout()):
+final class ViewerControls(initialScene: Scene, initialSolver: SolverChoice = SolverChoice.Classic)
+    extends JPanel(BorderLayout()):
   /** The drawing area. */
-  val simulation: SimulationPanel = SimulationPanel(initialScene)
+  val simulation: SimulationPanel = SimulationPanel(initialScene, initialSolver)
   private var running = false
   private val chooser = JComboBox[String](Scenes.all.map(_.name).toArray)
+  private val solverChooser = JComboBox[String](SolverChoice.values.map(_.label))
   private val startStop = JButton("Start")
   private val stepButton = JButton("Step")
   private val resetButton = JButton("Reset")
@@ -26,6 +30,13 @@ final class ViewerControls(initialScene: Scene) extends JPanel(BorderLayout()):
 
   chooser.setSelectedItem(initialScene.name)
   chooser.addActionListener(_ => Scenes.find(chooser.getSelectedItem.toString).foreach(select))
+  solverChooser.setSelectedItem(initialSolver.label)
+  solverChooser.addActionListener { _ =>
+    SolverChoice.values.find(_.label == solverChooser.getSelectedItem).foreach { choice =>
+      simulation.solver = choice
+      refreshInfo()
+    }
+  }
   startStop.addActionListener(_ => setRunning(!running))
   stepButton.addActionListener(_ => { setRunning(false); simulation.step(); refreshInfo() })
   resetButton.addActionListener(_ => { simulation.reset(); refreshInfo() })
@@ -37,7 +48,7 @@ final class ViewerControls(initialScene: Scene) extends JPanel(BorderLayout()):
   infoText.setFont(Font(Font.MONOSPACED, Font.PLAIN, 12))
 
   private val toolbar = JPanel()
-  Seq(chooser, startStop, stepButton, resetButton, actionButton, contacts, boxes, grid).foreach(toolbar.add(_))
+  Seq(chooser, solverChooser, startStop, stepButton, resetButton, actionButton, contacts, boxes, grid).foreach(toolbar.add(_))
   private val side = JPanel()
   side.setLayout(BoxLayout(side, BoxLayout.Y_AXIS))
   side.setBorder(BorderFactory.createTitledBorder("Info"))
@@ -65,6 +76,9 @@ final class ViewerControls(initialScene: Scene) extends JPanel(BorderLayout()):
   /** The info panel's current text. */
   def infoShown: String = infoText.getText
 
+  /** Chooses a solver as the solver chooser does (for the tests and for scripts). */
+  def chooseSolver(choice: SolverChoice): Unit = solverChooser.setSelectedItem(choice.label)
+
   private def select(scene: Scene): Unit =
     simulation.load(scene)
     updateActionButton()
@@ -83,10 +97,10 @@ final class ViewerControls(initialScene: Scene) extends JPanel(BorderLayout()):
 
 /** Opens the viewer window. */
 object Viewer:
-  /** Shows the viewer on `scene` in a new window (needs a display). */
-  def open(scene: Scene): Unit =
+  /** Shows the viewer on `scene`, stepped by `solver`, in a new window (needs a display). */
+  def open(scene: Scene, solver: SolverChoice = SolverChoice.Classic): Unit =
     SwingUtilities.invokeLater { () =>
-      val controls = ViewerControls(scene)
+      val controls = ViewerControls(scene, solver)
       val frame = JFrame("SiMS examples")
       frame.setDefaultCloseOperation(WindowConstants.EXIT_ON_CLOSE)
       frame.setContentPane(controls)

@@ -3,8 +3,10 @@ package sims.examples.headless
 import java.io.{ByteArrayOutputStream, PrintStream}
 import java.nio.file.Files
 import javax.imageio.ImageIO
+import java.awt.image.BufferedImage
 import org.scalatest.funsuite.AnyFunSuite
-import sims.scenes.Spring
+import sims.examples.SolverChoice
+import sims.scenes.{Spring, Stacking}
 
 /** The main job's files: GIF, PNG and CSV of a short run, and the progress bar's two modes. */
 class HeadlessRunSpec extends AnyFunSuite:
@@ -28,6 +30,35 @@ class HeadlessRunSpec extends AnyFunSuite:
     val text = log.toString
     assert(text.contains("steps/s") && text.contains("wrote"))
     assert(!text.contains("\r"), "no carriage returns when the output is not a terminal")
+
+  test("a run with the soft step says so and names its files after it"):
+    val directory = Files.createTempDirectory("sims-run").toFile
+    val log = ByteArrayOutputStream()
+    val result = HeadlessRun.run(Spring, 0.2, directory, PrintStream(log), interactive = false, solver = SolverChoice.Soft)
+    assert(result.steps == 12)
+    assert(Seq(result.gif, result.png, result.csv).map(_.getName) == Seq("spring-soft.gif", "spring-soft.png", "spring-soft.csv"))
+    assert(log.toString.contains("Solver: soft step (SoftStep("))
+
+  test("a comparison draws the classic step on the left and the soft step on the right of one GIF and PNG"):
+    val directory = Files.createTempDirectory("sims-compare").toFile
+    val log = ByteArrayOutputStream()
+    val comparison = HeadlessRun.compare(Stacking, 0.4, directory, PrintStream(log), interactive = false)
+    assert(comparison.steps == 24 && comparison.frames == 11)
+    assert(comparison.gif.getName == "stacking-compare.gif" && comparison.gif.length > 0)
+    assert(comparison.png.getName == "stacking-compare.png")
+    val picture = ImageIO.read(comparison.png)
+    assert(picture.getWidth == 2 * HeadlessRun.Width && picture.getHeight == HeadlessRun.Height)
+    assert(log.toString.contains("classic step") && log.toString.contains("soft step"))
+    // Each half is what a run with that solver alone draws, below the captions and beside the dividing line.
+    val quiet = PrintStream(ByteArrayOutputStream())
+    val classic = ImageIO.read(HeadlessRun.run(Stacking, 0.4, directory, quiet, interactive = false).png)
+    val soft = ImageIO.read(HeadlessRun.run(Stacking, 0.4, directory, quiet, interactive = false, solver = SolverChoice.Soft).png)
+    def differing(half: BufferedImage, offset: Int): Int =
+      (for y <- 30 until HeadlessRun.Height; x <- 2 until HeadlessRun.Width - 2
+        if half.getRGB(x, y) != picture.getRGB(offset + x, y) yield 1).size
+    assert(differing(classic, 0) == 0)
+    assert(differing(soft, HeadlessRun.Width) == 0)
+    assert(differing(classic, HeadlessRun.Width) > 0, "the two solvers stack the boxes differently")
 
   test("the progress bar redraws in place on a terminal and prints at most 11 lines otherwise"):
     val plain = ByteArrayOutputStream()

@@ -50,10 +50,30 @@ class RendererSpec extends AnyFunSuite:
     world += Scene.ground(5)
     world += Scene.ball(Vector2D(0, 0.98), 1)
     world.step()
-    assert(world.collisions.nonEmpty)
-    val contact = world.collisions.head.points.head
+    assert(world.contacts.nonEmpty)
+    val contact = world.contacts.head.points.head
     val image = Renderer.image(world, viewport, RenderOptions(contacts = true))
     assert(colourAt(image, contact.x, contact.y) == Renderer.ContactColour)
+
+  test("the soft step's contacts are drawn too, a speculative point (not touching yet) lighter"):
+    def soft(height: Double): World =
+      val world = World()
+      world.solver = sims.solver.SoftStep()
+      world += Scene.ground(5)
+      world += Scene.ball(Vector2D(0, 1 + height), 1)
+      world.step()
+      world
+    val hovering = soft(0.01) // 1 cm above the ground: within the speculative distance
+    val speculative = hovering.contacts.head
+    assert(speculative.separations.head > 0)
+    val point = speculative.points.head
+    val image = Renderer.image(hovering, viewport, RenderOptions(contacts = true))
+    assert(colourAt(image, point.x, point.y) == Renderer.SpeculativeColour)
+    val touching = soft(-0.02)
+    assert(touching.contacts.head.separations.head <= 0)
+    val pressed = touching.contacts.head.points.head
+    assert(colourAt(Renderer.image(touching, viewport, RenderOptions(contacts = true)), pressed.x, pressed.y) ==
+      Renderer.ContactColour)
 
   test("bounding boxes are drawn when asked"):
     val world = knownWorld()

@@ -3,8 +3,10 @@ package sims.examples.viewer
 import java.awt.Color
 import java.awt.image.BufferedImage
 import org.scalatest.funsuite.AnyFunSuite
+import sims.examples.SolverChoice
 import sims.examples.render.Renderer
 import sims.scenes.{BallStack, Cannon, Scenes}
+import sims.solver.{ClassicStep, SoftStep}
 
 /** The viewer's panels work without a display: they paint off-screen and respond to controls. */
 class ViewerSpec extends AnyFunSuite:
@@ -50,6 +52,34 @@ class ViewerSpec extends AnyFunSuite:
     assert(panel.staged.world.time == 0 && panel.staged.world.bodies.size == bodies)
     panel.load(Scenes.all.last)
     assert(panel.scene == Scenes.all.last)
+
+  test("the solver switch applies to the running world, and to worlds reset or loaded after it"):
+    val controls = ViewerControls(sims.scenes.Stacking)
+    val panel = controls.simulation
+    val world = panel.staged.world
+    assert(world.solver == ClassicStep && panel.solver == SolverChoice.Classic)
+    for _ <- 1 to 10 do panel.step()
+    controls.chooseSolver(SolverChoice.Soft)
+    assert(panel.staged.world eq world, "the same world runs on")
+    assert(world.solver.isInstanceOf[SoftStep] && panel.solver == SolverChoice.Soft)
+    panel.step()
+    assert(world.time > 10.5 * world.timeStep)
+    assert(panel.info.contains("Solver:     soft step"))
+    panel.reset()
+    assert(panel.staged.world.solver.isInstanceOf[SoftStep])
+    panel.load(BallStack)
+    assert(panel.staged.world.solver.isInstanceOf[SoftStep])
+    controls.chooseSolver(SolverChoice.Classic)
+    assert(panel.staged.world.solver == ClassicStep)
+    assert(ViewerControls(BallStack, SolverChoice.Soft).simulation.staged.world.solver.isInstanceOf[SoftStep])
+
+  test("the info panel counts the solver's contacts"):
+    for choice <- SolverChoice.values do
+      val panel = SimulationPanel(sims.scenes.Stacking, choice)
+      for _ <- 1 to 30 do panel.step()
+      val points = panel.staged.world.contacts.map(_.points.size).sum
+      assert(points > 0, choice.label)
+      assert(panel.info.contains(s"Contacts:   $points"), choice.label)
 
   test("zoom and pan change the view"):
     val panel = SimulationPanel(BallStack)
