@@ -123,6 +123,10 @@ private[sims] object ContactConstraints:
         val dvx = vBx - wB * rBy - vAx + wA * rAy
         val dvy = vBy + wB * rBx - vAy - wA * rAx
         val vn = dvx * nx + dvy * ny
+        // The fastest approach seen this step, for restitution: the impact's own speed when a
+        // speculative point closes within the step (the speed at the start of the step is
+        // slower by the gravity of the fall since).
+        if useBias && vn < hot(q + RelativeVelocity) then hot(q + RelativeVelocity) = vn
         val accumulated = hot(q + NormalImpulse)
         var impulse = -hot(q + NormalMass) * massScale * (vn + bias) - impulseScale * accumulated
         val total = math.max(accumulated + impulse, 0.0)
@@ -161,8 +165,8 @@ private[sims] object ContactConstraints:
       c += 1
 
   /** Once per step, after the substeps: a point that was approaching faster than `threshold`
-    * before the step and carried a normal impulse during it bounces, its normal velocity set
-    * to -e times the one before (impulse clamped as always).
+    * during the step and carried a normal impulse bounces, its normal velocity set to -e times
+    * its fastest approach (impulse clamped as always).
     */
   def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double): Unit =
     val hot = contacts.hot

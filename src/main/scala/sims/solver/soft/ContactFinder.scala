@@ -34,11 +34,13 @@ private[sims] final class ContactFinder:
   private val narrowphase = Narrowphase()
   private val manifold = Manifold()
   private var bodies: SoftBodies = null
+  private var timeStep = 0.0
 
   /** Fills `table.current` with this step's contacts of `world`, whose bodies `bodies` holds. */
   def find(world: World, table: ContactTable, bodies: SoftBodies, speculativeDistance: Double, linearSlop: Double,
       persistence: Double): Unit =
     this.bodies = bodies
+    timeStep = world.timeStep
     table.begin()
     world.detector match
       case detector: GridDetector =>
@@ -61,7 +63,8 @@ private[sims] final class ContactFinder:
             case kind =>
               if last >= 0 && persistence > 0 && keeps(table.committed, last, a, b, persistence) then keep(table, last, a, b, key)
               else
-                builtIn(kind, a, b, if last >= 0 then table.committed.side(last) else -1, speculativeDistance, linearSlop)
+                builtIn(kind, a, b, if last >= 0 then table.committed.side(last) else -1,
+                  speculativeDistance + timeStep * approachBound(a.body.index, b.body.index), linearSlop)
                 if manifold.pointCount > 0 then addManifold(table, a, b, key, last)
           i += 1
       case detector =>
@@ -73,6 +76,21 @@ private[sims] final class ContactFinder:
           val key = ContactTable.key(c.shape1, c.shape2)
           addCollision(table, c, key, table.lastOf(key))
           i += 1
+
+  /** An upper bound of how fast two bodies' points can approach each other at the start of
+    * the step: |vA - vB| + |wA| extentA + |wB| extentB. Over the step they close at most this
+    * times the time step, so points that far apart are speculative points: a fast ball is
+    * caught where it would land instead of sinking deep into a pile within one step (and being
+    * pushed out of it at speed).
+    */
+  private def approachBound(a: Int, b: Int): Double =
+    val state = bodies.state
+    val sA = a * SoftBodies.Stride
+    val sB = b * SoftBodies.Stride
+    val dvx = state(sB) - state(sA)
+    val dvy = state(sB + 1) - state(sA + 1)
+    math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + 2)) * bodies.bodies(a).extent +
+      math.abs(state(sB + 2)) * bodies.bodies(b).extent
 
   /** Fills the manifold of a pair of built-in kinds. */
   private def builtIn(kind: PairKind, a: Shape, b: Shape, lastSide: Int, speculativeDistance: Double, linearSlop: Double): Unit =

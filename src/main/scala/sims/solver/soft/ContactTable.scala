@@ -71,7 +71,7 @@ private[sims] object ContactTable:
   inline val NormalImpulse = 7 // accumulated (and warm started)
   inline val TangentImpulse = 8
   inline val MaxNormalImpulse = 9 // the largest normal impulse applied in one solve
-  inline val RelativeVelocity = 10 // normal relative velocity before the step
+  inline val RelativeVelocity = 10 // the fastest normal approach of the step (at its start, then in the solves)
   inline val HotPoint = 12
 
   // A contact's cold block in `Contacts.cold`, at `c * ColdStride`: what the collision stage
