@@ -66,9 +66,21 @@ final class Body(initialShapes: Shape*):
       m += s.mass
       sx += s.x * s.mass
       sy += s.y * s.mass
-    x = sx / m
-    y = sy / m
+    // Checked before anything changes: a user's shape may have any mass, and sums and
+    // moments of finite shapes can still overflow.
+    Shape.requireDerived(describe, "mass", m)
+    val centreX = sx / m
+    val centreY = sy / m
+    if !java.lang.Double.isFinite(centreX) || !java.lang.Double.isFinite(centreY) then
+      throw IllegalArgumentException(s"$describe: its centre of mass would be ($centreX, $centreY), not finite")
     var inertia = 0.0
+    for s <- shapes do
+      val dx = s.x - centreX
+      val dy = s.y - centreY
+      inertia += s.I + s.mass * (dx * dx + dy * dy)
+    Shape.requireDerived(describe, "moment of inertia", inertia)
+    x = centreX
+    y = centreY
     extent = 0
     val c = math.cos(-angle)
     val sn = math.sin(-angle)
@@ -76,7 +88,6 @@ final class Body(initialShapes: Shape*):
     for (s, i) <- shapes.zipWithIndex do
       val dx = s.x - x
       val dy = s.y - y
-      inertia += s.I + s.mass * (dx * dx + dy * dy)
       extent = math.max(extent, math.sqrt(dx * dx + dy * dy) + s.boundingRadius)
       offsetX(i) = dx * c - dy * sn
       offsetY(i) = dx * sn + dy * c
@@ -226,4 +237,7 @@ final class Body(initialShapes: Shape*):
   def contains(point: Vector2D): Boolean = shapes.exists(_.contains(point))
 
   override def toString: String = s"Body(pos = $pos, shapes = ${shapes.mkString(", ")})"
+
+  /** The body by its shapes, for errors about its mass (its position may not exist yet). */
+  private def describe: String = s"Body(${shapes.mkString(", ")})"
 
