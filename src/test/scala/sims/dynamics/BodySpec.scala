@@ -160,6 +160,7 @@ class BodySpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
       include("total torque Infinity")
     b.torque shouldBe 1e308
     b.force shouldBe Vector2D(0, 1e200)
+    b.applyForce(Vector2D(0, Double.MaxValue))
     intercept[IllegalArgumentException](b.applyForce(Vector2D(0, Double.MaxValue))).getMessage should
       include("total force (0.0, Infinity)")
     intercept[IllegalArgumentException](b.applyImpulse(Vector2D(1e308, 0))).getMessage should include("velocities")
