@@ -163,7 +163,9 @@ class BodySpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     b.applyForce(Vector2D(0, Double.MaxValue))
     intercept[IllegalArgumentException](b.applyForce(Vector2D(0, Double.MaxValue))).getMessage should
       include("total force (0.0, Infinity)")
-    intercept[IllegalArgumentException](b.applyImpulse(Vector2D(1e308, 0))).getMessage should include("velocities")
+    val light = Circle(0.1, 1).asBody // 1 / mass = 32: an impulse of 1e308 N s overflows its speed
+    intercept[IllegalArgumentException](light.applyImpulse(Vector2D(1e308, 0))).getMessage should include("velocities")
+    light.linearVelocity shouldBe Vector2D.Null
     intercept[IllegalArgumentException](b.applyImpulse(Vector2D(0, 1e308), Vector2D(1e10, 0))).getMessage should
       include("at point (1.0E10, 0.0)")
     b.linearVelocity shouldBe Vector2D.Null
