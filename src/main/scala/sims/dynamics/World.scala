@@ -3,7 +3,7 @@ package sims.dynamics
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
 import sims.collision.{Collision, Contact, Detector, GridDetector}
-import sims.dynamics.joints.Joint
+import sims.dynamics.joints.{Joint, SpringJoint}
 import sims.geometry.Vector2D
 import sims.solver.{CarriedState, ClassicStep, Solver}
 
@@ -130,6 +130,9 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   def +=(joint: Joint): this.type =
     if joint == null then throw IllegalArgumentException("joint must not be null")
     if jointBuffer.exists(_ eq joint) then throw IllegalArgumentException(s"joint $joint is already in this world")
+    joint match
+      case spring: SpringJoint => checkStability(spring, IllegalArgumentException(_))
+      case _ => ()
     jointBuffer += joint
     this
 
@@ -264,7 +267,23 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       val j = jointBuffer(i)
       if !j.bodiesIn(this) then
         throw IllegalArgumentException(s"joint $j connects a body that is not in this world")
+      j match
+        case spring: SpringJoint => checkStability(spring, IllegalStateException(_)) // h or masses may have changed
+        case _ => ()
       i += 1
+
+  /** Fails with `error` unless `spring` is stable over the solver's force interval: a spring too
+    * stiff for it grows without bound, to 1e150 m and beyond before any value overflows, so the
+    * state a failed step would restore is ruined already.
+    */
+  private def checkStability(spring: SpringJoint, error: String => RuntimeException): Unit =
+    val h = _solver.forceInterval(this)
+    val number = spring.stabilityNumber(h)
+    if !(number < World.SpringStabilityLimit) then
+      throw error(s"$spring is too stiff for the time step: (k h^2 + 2 c h) / m = $number with " +
+        s"h = $h s (${World.solverName(_solver)}'s force interval) and c = ${spring.damping} N s/m; " +
+        s"springs integrated explicitly diverge from ${World.SpringStabilityLimit} on. Lower springConstant or " +
+        "damping, make the bodies heavier or shorten the time step (or, with SoftStep, use more substeps)")
 
   /** Called by a solver after each stage of a step: throws if any body's checked quantity is no
     * longer finite (`step` then restores the state before the step).
@@ -304,6 +323,9 @@ object World:
   private[sims] val NoStage = "none"
   /** The step has begun, its solver has not named a stage yet. */
   private[sims] val StartStage = "start of step"
+  /** Springs whose stability number (`SpringJoint.stabilityNumber`) reaches this diverge. */
+  private[sims] val SpringStabilityLimit = 4.0
+
   /** The world's post-step hook (phase 7). */
   private[sims] val PostStepStage = "post-step hook"
 

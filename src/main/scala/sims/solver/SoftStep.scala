@@ -101,6 +101,9 @@ final case class SoftStep(
     world.stage = "finish"
     finish(world, workspace)
 
+  /** A substep: the force joints' forces are applied in every substep. */
+  override def forceInterval(world: World): Double = world.timeStep / substeps
+
   /** The contacts of the last soft step, speculative ones included: points where they are after
     * the step, separations after the step's motion.
     */
