@@ -33,11 +33,13 @@ final class Body(initialShapes: Shape*):
   /** 1 / I, 0 when fixed. */
   private[sims] var invI: Double = 0
 
-  private var freeMass, freeI: Double = 0
+  // Mass and inertia of the shapes (whether fixed or not), and the shapes' placements in the
+  // body's frame: computed once from the shapes; read and put back by `sims.io` as they are.
+  private[sims] var freeMass, freeI: Double = 0
   private var _fixed = false
-  private val offsetX, offsetY, relativeAngle = new Array[Double](shapes.length)
+  private[sims] val offsetX, offsetY, relativeAngle = new Array[Double](shapes.length)
   // True when every shape sits on the centre of mass: moving needs no trigonometry then.
-  private var allCentred = true
+  private[sims] var allCentred = true
 
   /** Counts the changes of the body's placement and of its inverse masses: whatever is
     * computed from them (the narrowphase's last result of a pair, a joint's geometry) is still
@@ -97,7 +99,8 @@ final class Body(initialShapes: Shape*):
     freeI = inertia
     updateInverseMass()
 
-  private def updateInverseMass(): Unit =
+  /** Sets 1 / mass and 1 / I from the shapes' mass and inertia and whether the body is fixed. */
+  private[sims] def updateInverseMass(): Unit =
     invMass = if _fixed then 0 else 1 / freeMass
     invI = if _fixed then 0 else 1 / freeI
 

@@ -30,6 +30,9 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
 
   private val a1 = Anchor(node1, anchor1)
   private val a2 = Anchor(node2, anchor2)
+
+  /** The anchors and placements this joint was made from (for saving a world). */
+  private[sims] val origin: JointOrigin = JointOrigin(node1, anchor1, node2, anchor2)
   private var _damping = 0.0
 
   /** Damping coefficient in N s/m (default 0). */
