@@ -63,10 +63,17 @@ private[io] object WorldReader:
     val count = in.readInt()
     val shapes = new Array[Shape](count)
     val frame = new Array[Double](3 * count)
+    val placements = new Array[Double](3 * count)
     for i <- 0 until count do
-      shapes(i) = shape(in)
+      val s = shape(in)
+      shapes(i) = s
+      placements(3 * i) = s.x; placements(3 * i + 1) = s.y; placements(3 * i + 2) = s.angle
       frame(3 * i) = in.readDouble(); frame(3 * i + 1) = in.readDouble(); frame(3 * i + 2) = in.readDouble()
+      // Made at its offset from the centre: a body placed as far as 1e307 m would overflow the
+      // sums of its centre of mass, which are not needed here.
+      s.place(frame(3 * i), frame(3 * i + 1), frame(3 * i + 2))
     val b = Body(shapes*)
+    for i <- 0 until count do shapes(i).place(placements(3 * i), placements(3 * i + 1), placements(3 * i + 2))
     // The body's frame as it was computed when it was made, not again from the shapes' current
     // placements (which would differ in the last bits).
     for i <- 0 until count do

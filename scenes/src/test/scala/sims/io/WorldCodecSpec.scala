@@ -119,6 +119,19 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
       include("loaded into a new world")
   }
 
+  test("a body placed 1e307 m away, where its mass times its position overflows, is saved and loaded") {
+    val world = World()
+    val far = Circle(1, 100).asBody
+    world += far
+    far.pos = Vector2D(1e307, -1e307)
+    world.step()
+    val loaded = WorldCodec.load(WorldCodec.save(world))
+    loaded.bodies.head.pos shouldBe far.pos
+    world.step()
+    loaded.step()
+    StateHash(loaded) shouldBe StateHash(world)
+  }
+
   /** A user's shape: the format does not know it. */
   final class Blob extends Shape:
     val density = 1.0
