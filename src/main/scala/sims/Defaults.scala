@@ -39,6 +39,13 @@ object Defaults:
   /** Shapes covering more grid cells than this bypass the grid and meet every shape directly. */
   val LargeShapeCells: Long = 64
 
+  /** The most candidate pairs the broadphase may find in one step (`GridDetector.maxPairs`):
+    * a step with more fails at once with an error naming the limit, rather than running out of
+    * memory (each pair keeps a few hundred bytes: one million is about 300 MB). Shapes spread
+    * out have a few pairs each; thousands piled at one point have n^2 / 2.
+    */
+  val MaxCandidatePairs: Int = 1_000_000
+
   /** Overlap the classic contact's position correction tolerates, m (SPEC section 4). */
   val ToleratedOverlap: Double = 0.01
 

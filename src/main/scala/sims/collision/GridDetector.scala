@@ -32,6 +32,16 @@ class GridDetector(val world: World) extends Detector:
   /** Sets the cell side; must be positive and finite. */
   def gridSide_=(side: Double): Unit = grid.gridSide = side
 
+  /** The most candidate pairs a step may have (default [[sims.Defaults.MaxCandidatePairs]]); a
+    * step with more fails, changing nothing, with an IllegalStateException naming this limit.
+    */
+  def maxPairs: Int = pairs.limit
+
+  /** Sets the limit of candidate pairs per step; must be at least 1. */
+  def maxPairs_=(limit: Int): Unit =
+    if limit < 1 then throw IllegalArgumentException(s"maxPairs must be at least 1, got $limit")
+    pairs.limit = limit
+
   /** Collision tests, tried in order; append methods for new shape types. */
   val detectionMethods: ArrayBuffer[PartialFunction[(Shape, Shape), Boolean]] =
     ArrayBuffer.from(BuiltInMethods.tests)

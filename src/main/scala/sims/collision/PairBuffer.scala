@@ -12,6 +12,9 @@ private[sims] final class PairBuffer:
   private var count = 0
   private var made = 0
 
+  /** The most pairs one step may have (see [[sims.Defaults.MaxCandidatePairs]]). */
+  var limit: Int = sims.Defaults.MaxCandidatePairs
+
   /** Number of pairs. */
   def size: Int = count
   /** Number of slots made so far (slots 0 until `created` exist; those from `size` on are idle). */
@@ -25,8 +28,12 @@ private[sims] final class PairBuffer:
   /** Forgets the pairs (the slots stay for reuse). */
   def clear(): Unit = count = 0
 
-  /** Appends the pair (a, b). */
+  /** Appends the pair (a, b); fails once there would be more than `limit` pairs. */
   def add(a: Shape, b: Shape): Unit =
+    if count == limit then
+      throw IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
+        "GridDetector.maxPairs): are many shapes piled at one place? Raise maxPairs if the scene really " +
+        "has that many overlapping bounds")
     if count == slots.length then slots = java.util.Arrays.copyOf(slots, count * 2)
     var s = slots(count)
     if s == null then

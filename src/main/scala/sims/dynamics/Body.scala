@@ -33,11 +33,13 @@ final class Body(initialShapes: Shape*):
   /** 1 / I, 0 when fixed. */
   private[sims] var invI: Double = 0
 
-  private var freeMass, freeI: Double = 0
+  // Mass and inertia of the shapes (whether fixed or not), and the shapes' placements in the
+  // body's frame: computed once from the shapes; read and put back by `sims.io` as they are.
+  private[sims] var freeMass, freeI: Double = 0
   private var _fixed = false
-  private val offsetX, offsetY, relativeAngle = new Array[Double](shapes.length)
+  private[sims] val offsetX, offsetY, relativeAngle = new Array[Double](shapes.length)
   // True when every shape sits on the centre of mass: moving needs no trigonometry then.
-  private var allCentred = true
+  private[sims] var allCentred = true
 
   /** Counts the changes of the body's placement and of its inverse masses: whatever is
     * computed from them (the narrowphase's last result of a pair, a joint's geometry) is still
@@ -66,9 +68,21 @@ final class Body(initialShapes: Shape*):
       m += s.mass
       sx += s.x * s.mass
       sy += s.y * s.mass
-    x = sx / m
-    y = sy / m
+    // Checked before anything changes: a user's shape may have any mass, and sums and
+    // moments of finite shapes can still overflow.
+    Shape.requireDerived(describe, "mass", m)
+    val centreX = sx / m
+    val centreY = sy / m
+    if !java.lang.Double.isFinite(centreX) || !java.lang.Double.isFinite(centreY) then
+      throw IllegalArgumentException(s"$describe: its centre of mass would be ($centreX, $centreY), not finite")
     var inertia = 0.0
+    for s <- shapes do
+      val dx = s.x - centreX
+      val dy = s.y - centreY
+      inertia += s.I + s.mass * (dx * dx + dy * dy)
+    Shape.requireDerived(describe, "moment of inertia", inertia)
+    x = centreX
+    y = centreY
     extent = 0
     val c = math.cos(-angle)
     val sn = math.sin(-angle)
@@ -76,7 +90,6 @@ final class Body(initialShapes: Shape*):
     for (s, i) <- shapes.zipWithIndex do
       val dx = s.x - x
       val dy = s.y - y
-      inertia += s.I + s.mass * (dx * dx + dy * dy)
       extent = math.max(extent, math.sqrt(dx * dx + dy * dy) + s.boundingRadius)
       offsetX(i) = dx * c - dy * sn
       offsetY(i) = dx * sn + dy * c
@@ -86,7 +99,8 @@ final class Body(initialShapes: Shape*):
     freeI = inertia
     updateInverseMass()
 
-  private def updateInverseMass(): Unit =
+  /** Sets 1 / mass and 1 / I from the shapes' mass and inertia and whether the body is fixed. */
+  private[sims] def updateInverseMass(): Unit =
     invMass = if _fixed then 0 else 1 / freeMass
     invI = if _fixed then 0 else 1 / freeI
 
@@ -192,31 +206,59 @@ final class Body(initialShapes: Shape*):
       vx = 0; vy = 0; w = 0
     updateInverseMass()
 
-  /** Adds `f` to the force on the centre of mass; nothing happens when the body is fixed. */
+  /** Adds `f` to the force on the centre of mass; nothing happens when the body is fixed.
+    * Fails, changing nothing, if `f` or the total force would not be finite.
+    */
   def applyForce(f: Vector2D): Unit =
     Vector2D.requireFinite("force", f)
-    if !_fixed then
-      fx += f.x; fy += f.y
+    if !_fixed then addForce(f, null, 0)
 
-  /** Applies `f` at `point` (world coordinates): changes force and torque. */
+  /** Applies `f` at `point` (world coordinates): changes force and torque. Fails, changing
+    * nothing, if an argument, the torque about the centre or the totals would not be finite.
+    */
   def applyForce(f: Vector2D, point: Vector2D): Unit =
     Vector2D.requireFinite("force", f)
     Vector2D.requireFinite("point", point)
-    if !_fixed then
-      fx += f.x; fy += f.y
-      tau += (point.x - x) * f.y - (point.y - y) * f.x
+    if !_fixed then addForce(f, point, (point.x - x) * f.y - (point.y - y) * f.x)
 
-  /** Applies the impulse `p` at the centre of mass: changes the linear velocity. */
+  /** Adds force `f` and torque `t` (of `f` at `point`, or 0 with no point) after checking that
+    * every sum stays finite, so that an overflow is reported here, where it is given, and not by
+    * the next step.
+    */
+  private def addForce(f: Vector2D, point: Vector2D, t: Double): Unit =
+    if !java.lang.Double.isFinite(t) then
+      throw IllegalArgumentException(s"force $f at point $point has a torque of $t about the centre of mass $pos, not finite")
+    val (newX, newY, newTorque) = (fx + f.x, fy + f.y, tau + t)
+    if !java.lang.Double.isFinite(newX) || !java.lang.Double.isFinite(newY) then
+      throw IllegalArgumentException(s"force $f would make the body's total force ($newX, $newY), not finite")
+    if !java.lang.Double.isFinite(newTorque) then
+      throw IllegalArgumentException(s"force $f at point $point would make the body's total torque $newTorque, not finite")
+    fx = newX; fy = newY; tau = newTorque
+
+  /** Applies the impulse `p` at the centre of mass: changes the linear velocity. Fails,
+    * changing nothing, if the velocity would not be finite.
+    */
   def applyImpulse(p: Vector2D): Unit =
     Vector2D.requireFinite("impulse", p)
-    vx += p.x * invMass
-    vy += p.y * invMass
+    addImpulse(p, null, 0, 0)
 
-  /** Applies the impulse `p` at `point` (world coordinates): changes both velocities. */
+  /** Applies the impulse `p` at `point` (world coordinates): changes both velocities. Fails,
+    * changing nothing, if the velocities would not be finite.
+    */
   def applyImpulse(p: Vector2D, point: Vector2D): Unit =
     Vector2D.requireFinite("impulse", p)
     Vector2D.requireFinite("point", point)
-    impulseAt(p.x, p.y, point.x - x, point.y - y)
+    addImpulse(p, point, point.x - x, point.y - y)
+
+  /** `impulseAt` after checking that the velocities stay finite. */
+  private def addImpulse(p: Vector2D, point: Vector2D, rx: Double, ry: Double): Unit =
+    val (newX, newY) = (vx + p.x * invMass, vy + p.y * invMass)
+    val newW = w + (rx * p.y - ry * p.x) * invI
+    if !java.lang.Double.isFinite(newX) || !java.lang.Double.isFinite(newY) || !java.lang.Double.isFinite(newW) then
+      val at = if point == null then "" else s" at point $point"
+      throw IllegalArgumentException(
+        s"impulse $p$at would make the body's velocities ($newX, $newY) and $newW rad/s, not finite")
+    vx = newX; vy = newY; w = newW
 
   /** Velocity of the body's point at `point` (world coordinates): `v + w x r`. */
   def velocityOfPoint(point: Vector2D): Vector2D =
@@ -226,4 +268,7 @@ final class Body(initialShapes: Shape*):
   def contains(point: Vector2D): Boolean = shapes.exists(_.contains(point))
 
   override def toString: String = s"Body(pos = $pos, shapes = ${shapes.mkString(", ")})"
+
+  /** The body by its shapes, for errors about its mass (its position may not exist yet). */
+  private def describe: String = s"Body(${shapes.mkString(", ")})"
 

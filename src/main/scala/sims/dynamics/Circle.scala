@@ -13,6 +13,8 @@ final class Circle(val radius: Double, val density: Double) extends Shape:
   /** m r^2 / 2. */
   val I: Double = mass * radius * radius / 2
 
+  Shape.checkDerived(this, s"Circle(radius = $radius, density = $density)")
+
   def AABB: AABB = new sims.geometry.AABB(Vector2D(x - radius, y - radius), Vector2D(x + radius, y + radius))
 
   /** The interval covered on `axis`: centre projection plus or minus r |axis|. */

@@ -15,6 +15,8 @@ final class Rectangle(val halfWidth: Double, val halfHeight: Double, val density
   /** m ((2 hw)^2 + (2 hh)^2) / 12. */
   val I: Double = mass * ((2 * halfWidth) * (2 * halfWidth) + (2 * halfHeight) * (2 * halfHeight)) / 12
 
+  Shape.checkDerived(this, s"Rectangle(halfWidth = $halfWidth, halfHeight = $halfHeight, density = $density)")
+
   override def toString: String =
     s"Rectangle(halfWidth = $halfWidth, halfHeight = $halfHeight, density = $density, pos = $pos)"
 

@@ -17,6 +17,8 @@ final class RegularPolygon(val n: Int, val radius: Double, val density: Double)
     val c = math.cos(math.Pi / n)
     mass * radius * radius * (1 + 2 * c * c) / 6
 
+  Shape.checkDerived(this, s"RegularPolygon(n = $n, radius = $radius, density = $density)")
+
   override def toString: String = s"RegularPolygon(n = $n, radius = $radius, density = $density, pos = $pos)"
 
 /** Vertex construction of [[RegularPolygon]]. */

@@ -35,8 +35,7 @@ abstract class Shape:
   def pos_=(newPos: Vector2D): Unit =
     Vector2D.requireFinite("pos", newPos)
     checkNotInWorld("pos")
-    place(newPos.x, newPos.y, angle)
-    if body != null then body.shapesChanged()
+    replace(newPos.x, newPos.y, angle)
 
   /** Rotation of the shape in radians, counter-clockwise, world frame. */
   def rotation: Double = angle
@@ -45,8 +44,7 @@ abstract class Shape:
   def rotation_=(newRotation: Double): Unit =
     Vector2D.requireFinite("rotation", newRotation)
     checkNotInWorld("rotation")
-    place(x, y, newRotation)
-    if body != null then body.shapesChanged()
+    replace(x, y, newRotation)
 
   private var _restitution = sims.Defaults.Restitution
 
@@ -126,6 +124,20 @@ abstract class Shape:
   /** Upper y bound of the AABB. */
   private[sims] def maxY: Double = AABB.maxVertex.y
 
+  /** Moves the shape and lets its body recompute mass and centre; if the body cannot (its centre
+    * or inertia would overflow), the shape goes back where it was and the error is rethrown.
+    */
+  private def replace(newX: Double, newY: Double, newAngle: Double): Unit =
+    val (oldX, oldY, oldAngle) = (x, y, angle)
+    place(newX, newY, newAngle)
+    if body != null then
+      try body.shapesChanged()
+      catch
+        case e: IllegalArgumentException =>
+          place(oldX, oldY, oldAngle)
+          body.shapesChanged()
+          throw e
+
   private def checkNotInWorld(what: String): Unit =
     if body != null && body.world != null then
       throw IllegalArgumentException(
@@ -138,6 +150,24 @@ object Shape:
     if !(value > 0) || value.isInfinite then
       throw IllegalArgumentException(s"$name must be positive and finite, got $value")
     value
+
+  /** Fails unless a quantity computed from a shape's or body's arguments (volume, mass,
+    * inertia) is positive and finite with a finite inverse: arguments that each pass their own
+    * check can still overflow (a radius of 1e200 squared) or underflow (1e-300 squared) in the
+    * product, and the solvers divide by mass and inertia.
+    */
+  private[sims] def requireDerived(owner: String, name: String, value: Double): Double =
+    if !(value > 0) || value.isInfinite || (1 / value).isInfinite then
+      throw IllegalArgumentException(
+        s"$owner: its $name would be $value, not a positive finite number with a finite inverse; " +
+          "the arguments are too large or too small")
+    value
+
+  /** Fails unless a shape's volume, mass and moment of inertia are usable (see `requireDerived`). */
+  private[dynamics] def checkDerived(shape: Shape, arguments: String): Unit =
+    requireDerived(arguments, "volume", shape.volume)
+    requireDerived(arguments, "mass", shape.mass)
+    requireDerived(arguments, "moment of inertia", shape.I)
 
   /** Fails unless `value` is finite and at least 0. */
   private[sims] def requireNonNegative(name: String, value: Double): Double =

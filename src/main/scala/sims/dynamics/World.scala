@@ -3,7 +3,7 @@ package sims.dynamics
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
 import sims.collision.{Collision, Contact, Detector, GridDetector}
-import sims.dynamics.joints.Joint
+import sims.dynamics.joints.{Joint, SpringJoint}
 import sims.geometry.Vector2D
 import sims.solver.{CarriedState, ClassicStep, Solver}
 
@@ -130,6 +130,9 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   def +=(joint: Joint): this.type =
     if joint == null then throw IllegalArgumentException("joint must not be null")
     if jointBuffer.exists(_ eq joint) then throw IllegalArgumentException(s"joint $joint is already in this world")
+    joint match
+      case spring: SpringJoint => checkStability(spring, IllegalArgumentException(_))
+      case _ => ()
     jointBuffer += joint
     this
 
@@ -156,16 +159,51 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   /** Run after each step (phase 7); override it to observe or steer the simulation. */
   def postStep(): Unit = ()
 
-  /** Simulates one time step with the `solver`. If a stage produces a non-finite force,
-    * velocity or position, the world is restored to its state before the step and an
-    * ArithmeticException names the body and the stage.
+  /** Simulates one time step with the `solver`, then runs `postStep()`.
+    *
+    * A step either completes or changes nothing: if any stage throws, the world (bodies, time,
+    * joints' impulses, the solvers' carried contacts) is restored to its state before the step
+    * and the error names the stage. A non-finite force, velocity or position is an
+    * ArithmeticException naming the body and the stage. Any other exception of a Java platform
+    * type (an IllegalStateException for a shape pair no narrowphase method covers, say) is
+    * rethrown as a new exception of the same type whose message names the stage and whose cause
+    * is the original; an exception of another type (a user's own, from a detection method or
+    * the post-step hook) as a [[StepFailedException]] with the original as its cause. Errors of
+    * the virtual machine (out of memory) are rethrown as they are, after trying to restore.
     */
   def step(): Unit =
     checkJoints()
     beforeStep.save(this, withSolvers = false)
     startSolverStep()
-    _solver.step(this)
-    postStep()
+    stage = World.StartStage
+    try
+      _solver.step(this)
+      stage = World.PostStepStage
+      postStep()
+    catch case error: Throwable => failStep(error)
+    stage = World.NoStage
+
+  /** The stage of the step under way, set by the solver as each stage begins (a constant
+    * string, so setting it allocates nothing); named by the error of a failed step.
+    */
+  private[sims] var stage: String = World.NoStage
+
+  // Set by `guard` when it throws: its exception already names the body and the stage.
+  private var guardFailed = false
+
+  /** Restores the state before the step and throws `error`, or an exception naming the stage. */
+  private def failStep(error: Throwable): Nothing =
+    val failedStage = stage
+    stage = World.NoStage
+    try undoStep()
+    catch case undoError: Throwable => error.addSuppressed(undoError)
+    if guardFailed then
+      guardFailed = false
+      throw error
+    if !scala.util.control.NonFatal(error) then throw error
+    val message = s"step failed in stage '$failedStage' of ${World.solverName(_solver)}: ${error.getMessage}; " +
+      "the world was restored to its state before the step"
+    throw World.sameKind(error, message).getOrElse(StepFailedException(failedStage, message, error))
 
   /** A copy of the dynamic state of every body and of the time, to `restore` later. */
   def snapshot(): WorldState =
@@ -229,10 +267,26 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       val j = jointBuffer(i)
       if !j.bodiesIn(this) then
         throw IllegalArgumentException(s"joint $j connects a body that is not in this world")
+      j match
+        case spring: SpringJoint => checkStability(spring, IllegalStateException(_)) // h or masses may have changed
+        case _ => ()
       i += 1
 
-  /** Called by a solver after each stage of a step: throws, after restoring the state before
-    * the step, if any body's checked quantity is no longer finite.
+  /** Fails with `error` unless `spring` is stable over the solver's force interval: a spring too
+    * stiff for it grows without bound, to 1e150 m and beyond before any value overflows, so the
+    * state a failed step would restore is ruined already.
+    */
+  private def checkStability(spring: SpringJoint, error: String => RuntimeException): Unit =
+    val h = _solver.forceInterval(this)
+    val number = spring.stabilityNumber(h)
+    if !(number < World.SpringStabilityLimit) then
+      throw error(s"$spring is too stiff for the time step: (k h^2 + 2 c h) / m = $number with " +
+        s"h = $h s (${World.solverName(_solver)}'s force interval) and c = ${spring.damping} N s/m; " +
+        s"springs integrated explicitly diverge from ${World.SpringStabilityLimit} on. Lower springConstant or " +
+        "damping, make the bodies heavier or shorten the time step (or, with SoftStep, use more substeps)")
+
+  /** Called by a solver after each stage of a step: throws if any body's checked quantity is no
+    * longer finite (`step` then restores the state before the step).
     */
   private[sims] def guard(phase: String, checked: Checked): Unit =
     var i = 0
@@ -242,14 +296,53 @@ class World(makeDetector: World => Detector = GridDetector(_)):
         case Checked.Forces => finite(b.fx) && finite(b.fy) && finite(b.tau)
         case Checked.Velocities => finite(b.vx) && finite(b.vy) && finite(b.w)
         case Checked.Positions => finite(b.x) && finite(b.y) && finite(b.angle)
-      if !ok then
-        val message = s"non-finite ${checked.quantity} of body $i ($b) in phase '$phase'; the world was restored to its state before the step"
-        undoStep()
-        throw ArithmeticException(message)
+      if !ok then guardFailure(i, phase, checked)
       i += 1
+
+  /** The guard for a solver that keeps the bodies' state in an array during the step: body i's
+    * checked quantity is `values(i * stride)` to `values(i * stride + 2)`.
+    */
+  private[sims] def guard(phase: String, checked: Checked, values: Array[Double], stride: Int): Unit =
+    var i = 0
+    while i < bodyBuffer.length do
+      val k = i * stride
+      if !(finite(values(k)) && finite(values(k + 1)) && finite(values(k + 2))) then guardFailure(i, phase, checked)
+      i += 1
+
+  private def guardFailure(i: Int, phase: String, checked: Checked): Nothing =
+    guardFailed = true // `step` restores the world and rethrows this as it is
+    throw ArithmeticException(s"non-finite ${checked.quantity} of body $i (${bodyBuffer(i)}) in phase '$phase'; " +
+      "the world was restored to its state before the step")
 
   // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
   private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
+
+/** The world's own stage names and the helpers of `World.step`'s errors. */
+object World:
+  /** No step under way. */
+  private[sims] val NoStage = "none"
+  /** The step has begun, its solver has not named a stage yet. */
+  private[sims] val StartStage = "start of step"
+  /** Springs whose stability number (`SpringJoint.stabilityNumber`) reaches this diverge. */
+  private[sims] val SpringStabilityLimit = 4.0
+
+  /** The world's post-step hook (phase 7). */
+  private[sims] val PostStepStage = "post-step hook"
+
+  /** The solver's name for messages: its class's, without the parameters. */
+  private[sims] def solverName(solver: Solver): String = solver.getClass.getSimpleName.stripSuffix("$")
+
+  /** A new exception of `error`'s type with `message` and `error` as its cause, if that type is
+    * one of the Java platform's and has a constructor taking a message.
+    */
+  private[sims] def sameKind(error: Throwable, message: String): Option[Throwable] =
+    if !error.getClass.getName.startsWith("java.") then None
+    else
+      try
+        val made = error.getClass.getConstructor(classOf[String]).newInstance(message)
+        made.initCause(error)
+        Some(made)
+      catch case _: ReflectiveOperationException | _: IllegalStateException | _: SecurityException => None
 
 /** What the world's guard checks after a stage of a step. */
 private[sims] enum Checked(val quantity: String):

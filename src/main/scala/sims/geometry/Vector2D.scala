@@ -27,14 +27,30 @@ final case class Vector2D(x: Double, y: Double):
   /** The z component of the 3D cross product: `x * v.y - y * v.x`. */
   inline def cross(v: Vector2D): Double = x * v.y - y * v.x
 
-  /** Euclidean length. */
-  def length: Double = math.sqrt(x * x + y * y)
+  /** Euclidean length; finite for every finite vector (no overflow of x^2 + y^2 for huge
+    * components, no underflow to 0 for tiny ones).
+    */
+  def length: Double =
+    val squared = x * x + y * y
+    if Vector2D.safeSquare(squared) then math.sqrt(squared) else Vector2D.scaledLength(x, y)
 
-  /** The unit vector of this direction; fails on the null vector, which has no direction. */
+  /** The unit vector of this direction; fails on the null vector, which has no direction, and
+    * on a non-finite vector.
+    */
   def unit: Vector2D =
-    val l = length
-    if l == 0 then throw IllegalArgumentException("Vector2D.unit: the null vector has no unit vector")
-    Vector2D(x / l, y / l)
+    val squared = x * x + y * y
+    if Vector2D.safeSquare(squared) then
+      val l = math.sqrt(squared)
+      Vector2D(x / l, y / l)
+    else
+      if !isFinite then throw IllegalArgumentException(s"Vector2D.unit: $this is not finite")
+      if x == 0 && y == 0 then throw IllegalArgumentException("Vector2D.unit: the null vector has no unit vector")
+      // Scaled by the larger component first: both quotients are at most 1 and one is exactly 1.
+      val scale = math.max(math.abs(x), math.abs(y))
+      val sx = x / scale
+      val sy = y / scale
+      val l = math.sqrt(sx * sx + sy * sy)
+      Vector2D(sx / l, sy / l)
 
   /** The vector projection of this vector onto `v`; the null vector when `v` is null. */
   def project(v: Vector2D): Vector2D =
@@ -74,6 +90,23 @@ object Vector2D:
 
   /** The unit vector along y, (0, 1). */
   val j: Vector2D = Vector2D(0, 1)
+
+  // x^2 + y^2 between these needs no rescaling: sqrt of it is exact to rounding (and gives the
+  // same bits as always). Outside, a component's square overflowed or lost precision.
+  private val SmallestSafeSquare = java.lang.Double.MIN_NORMAL * (1L << 53).toDouble
+  private val LargestSafeSquare = Double.MaxValue
+
+  private inline def safeSquare(squared: Double): Boolean =
+    squared >= SmallestSafeSquare && squared <= LargestSafeSquare
+
+  /** The length of (x, y) when x^2 + y^2 over- or underflows: scaled by the larger component. */
+  private def scaledLength(x: Double, y: Double): Double =
+    val scale = math.max(math.abs(x), math.abs(y))
+    if scale == 0 || scale.isInfinite || scale.isNaN then math.sqrt(x * x + y * y)
+    else
+      val sx = x / scale
+      val sy = y / scale
+      scale * math.sqrt(sx * sx + sy * sy)
 
   /** Checks that `value` is finite; otherwise throws an IllegalArgumentException naming `name`. */
   private[sims] def requireFinite(name: String, value: Vector2D): Vector2D =

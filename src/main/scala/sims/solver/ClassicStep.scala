@@ -24,16 +24,22 @@ import sims.dynamics.joints.ForceJoint
 object ClassicStep extends Solver:
   def step(world: World): Unit =
     val h = world.timeStep
+    world.stage = "advance time"
     advanceTime(world, h)                 // phase 1
+    world.stage = "joint forces"
     applyJointForces(world)               // phase 2
     world.guard("joint forces", Checked.Forces)
+    world.stage = "integration of accelerations"
     integrateAccelerations(world, h)      // phase 3
     world.guard("integration of accelerations", Checked.Velocities)
+    world.stage = "velocity correction"
     correctVelocities(world, h)           // phase 4
     world.guard("velocity correction", Checked.Velocities)
+    world.stage = "integration of velocities"
     integrateVelocities(world, h)         // phase 5
     world.guard("integration of velocities", Checked.Positions)
     if world.enablePositionCorrection then
+      world.stage = "position correction"
       correctPositions(world, h)          // phase 6
       world.guard("position correction", Checked.Positions)
 

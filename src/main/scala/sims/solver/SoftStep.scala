@@ -74,21 +74,39 @@ final case class SoftStep(
   def step(world: World): Unit =
     val workspace = world.workspace(classOf[SoftWorkspace], SoftWorkspace())
     val h = world.timeStep / substeps
+    // world.stage names the stage under way for the error of a failed step.
+    world.stage = "advanceTime"
     advanceTime(world)
+    world.stage = "loadBodies"
     loadBodies(world, workspace)
+    world.stage = "findContacts"
     findContacts(world, workspace)
+    world.stage = "prepare"
     prepare(workspace, h)
     var substep = 0
     while substep < substeps do
+      world.stage = "integrateVelocities"
       integrateVelocities(world, workspace, h)
-      if substep == 0 then world.guard("joint forces", Checked.Forces)
+      if substep == 0 then
+        world.guard("joint forces", Checked.Forces)
+        // Before the contacts spread a non-finite velocity to other bodies (NaN on a fixed one).
+        world.guard("integrateVelocities", Checked.Velocities, workspace.bodies.state, SoftBodies.Stride)
+      world.stage = "warmStart"
       warmStart(workspace)
+      world.stage = "solve"
       solve(workspace, useBias = true)
+      world.stage = "integratePositions"
       integratePositions(workspace, h)
+      world.stage = "relax"
       solve(workspace, useBias = false) // relax
       substep += 1
+    world.stage = "applyRestitution"
     applyRestitution(workspace)
+    world.stage = "finish"
     finish(world, workspace)
+
+  /** A substep: the force joints' forces are applied in every substep. */
+  override def forceInterval(world: World): Double = world.timeStep / substeps
 
   /** The contacts of the last soft step, speculative ones included: points where they are after
     * the step, separations after the step's motion.

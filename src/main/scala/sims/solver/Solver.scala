@@ -16,5 +16,10 @@ trait Solver:
   /** Advances `world` by one `world.timeStep`. */
   def step(world: World): Unit
 
+  /** The interval over which this solver integrates forces (the force joints' springs):
+    * `world.timeStep` unless the solver substeps.
+    */
+  def forceInterval(world: World): Double = world.timeStep
+
   /** The contacts of `world`'s last step with this solver, as copies. */
   def contacts(world: World): IndexedSeq[Contact]

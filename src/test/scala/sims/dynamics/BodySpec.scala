@@ -139,3 +139,35 @@ class BodySpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     intercept[IllegalArgumentException](c.pos = Vector2D(1, 1)).getMessage should include("already in a world")
     intercept[IllegalArgumentException](c.rotation = 1).getMessage should include("already in a world")
   }
+
+  test("a force of 1e308 N applied 1e308 m away is rejected where it is given, naming its infinite torque (issue 16)") {
+    val world = World()
+    val b = Circle(1, 1).asBody
+    world += b
+    val error = intercept[IllegalArgumentException](b.applyForce(Vector2D(0, 1e308), Vector2D(1e308, 0)))
+    error.getMessage should include("torque of Infinity")
+    error.getMessage should include("(1.0E308, 0.0)")
+    b.force shouldBe Vector2D.Null
+    b.torque shouldBe 0.0
+    world.step() // nothing stuck: the next steps run
+    world.step()
+  }
+
+  test("torques, forces and impulses whose sums overflow are rejected and change nothing") {
+    val b = Circle(1, 1).asBody
+    b.applyForce(Vector2D(0, 1e200), Vector2D(1e108, 0))
+    intercept[IllegalArgumentException](b.applyForce(Vector2D(0, 1e200), Vector2D(1e108, 0))).getMessage should
+      include("total torque Infinity")
+    b.torque shouldBe 1e308
+    b.force shouldBe Vector2D(0, 1e200)
+    b.applyForce(Vector2D(0, Double.MaxValue))
+    intercept[IllegalArgumentException](b.applyForce(Vector2D(0, Double.MaxValue))).getMessage should
+      include("total force (0.0, Infinity)")
+    val light = Circle(0.1, 1).asBody // 1 / mass = 32: an impulse of 1e308 N s overflows its speed
+    intercept[IllegalArgumentException](light.applyImpulse(Vector2D(1e308, 0))).getMessage should include("velocities")
+    light.linearVelocity shouldBe Vector2D.Null
+    intercept[IllegalArgumentException](b.applyImpulse(Vector2D(0, 1e308), Vector2D(1e10, 0))).getMessage should
+      include("at point (1.0E10, 0.0)")
+    b.linearVelocity shouldBe Vector2D.Null
+    b.angularVelocity shouldBe 0.0
+  }

@@ -2,6 +2,7 @@ package sims.geometry
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
+import org.scalacheck.Gen
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
 import sims.{Close, Generators}
 
@@ -38,6 +39,38 @@ class Vector2DSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
   test("unit of the null vector is an error") {
     val e = intercept[IllegalArgumentException](Vector2D.Null.unit)
     e.getMessage should include("null vector")
+  }
+
+  test("unit of a huge vector is not (0, 0): its length does not overflow (issue 16)") {
+    val u = Vector2D(1e200, 1e200).unit
+    u.x shouldBe math.sqrt(0.5) +- 1e-15
+    u.y shouldBe u.x
+    Vector2D(1e200, 1e200).length shouldBe math.sqrt(2) * 1e200 +- 1e185
+    Vector2D(Double.MaxValue, 0).unit shouldBe Vector2D(1, 0)
+  }
+
+  test("unit of a tiny vector is no null-vector error: its length does not underflow (issue 16)") {
+    Vector2D(1e-200, 0).unit shouldBe Vector2D(1, 0)
+    Vector2D(0, -java.lang.Double.MIN_VALUE).unit shouldBe Vector2D(0, -1)
+    Vector2D(3e-170, 4e-170).unit.x shouldBe 0.6 +- 1e-15
+    Vector2D(3e-170, 4e-170).length shouldBe 5e-170 +- 1e-184
+  }
+
+  test("unit of a non-finite vector is an error naming it; its length is NaN or infinite") {
+    intercept[IllegalArgumentException](Vector2D(Double.NaN, 1).unit).getMessage should include("NaN")
+    intercept[IllegalArgumentException](Vector2D(Double.PositiveInfinity, 1).unit).getMessage should include("Infinity")
+    Vector2D(Double.NaN, 1).length.isNaN shouldBe true
+    Vector2D(Double.NegativeInfinity, 1).length shouldBe Double.PositiveInfinity
+  }
+
+  test("in the ordinary range, length and unit are the plain formulas, to the bit") {
+    forAll(Gen.choose(-1e6, 1e6), Gen.choose(-1e6, 1e6)) { (x: Double, y: Double) =>
+      whenever(x != 0 || y != 0) {
+        val l = math.sqrt(x * x + y * y)
+        Vector2D(x, y).length shouldBe l
+        Vector2D(x, y).unit shouldBe Vector2D(x / l, y / l)
+      }
+    }
   }
 
   test("projection onto the null vector is the null vector") {

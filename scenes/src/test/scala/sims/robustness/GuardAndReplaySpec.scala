@@ -24,14 +24,13 @@ class GuardAndReplaySpec extends AnyFunSuite with Matchers:
     world.step() // and the world goes on
   }
 
-  test("an infinite force from the forces phase is caught before it is integrated") {
+  test("a force whose sum with the forces already applied overflows is rejected where it is applied (issue 16)") {
     val (world, balls) = BallStack.withBalls(3)
     balls(0).applyForce(Vector2D(Double.MaxValue, 0))
-    balls(0).applyForce(Vector2D(Double.MaxValue, 0)) // the sum overflows
     val before = StateHash(world)
-    val error = intercept[ArithmeticException](world.step())
-    error.getMessage should include("non-finite force of body 3")
-    error.getMessage should include("joint forces")
+    val error = intercept[IllegalArgumentException](balls(0).applyForce(Vector2D(Double.MaxValue, 0)))
+    error.getMessage should include("total force (Infinity, 0.0)")
+    balls(0).force shouldBe Vector2D(Double.MaxValue, 0) // unchanged by the rejected call
     StateHash(world) shouldBe before
   }
 

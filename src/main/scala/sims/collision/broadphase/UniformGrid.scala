@@ -38,16 +38,25 @@ private[sims] final class UniformGrid extends Broadphase:
   // is max(cell(a), cell(b)): computed once per shape instead of once per candidate.
   private var boxMinX, boxMinY, boxMaxX, boxMaxY = new Array[Double](0)
   private var placement = new Array[Byte](0)
-  private var coarseX0, coarseY0, fineX0, fineY0, fineX1, fineY1 = new Array[Int](0)
+  private var fineX0, fineY0, fineX1, fineY1 = new Array[Int](0)
+  // Coarse cells as Longs: floor(coordinate / gridSide) is exact in a Long for any coordinate
+  // up to 1.8e19 gridSides, so far from the origin pairs keep the SPEC's order (in an Int it
+  // saturates beyond 2^31 cells, 4.3e9 m with 2 m cells).
+  private var coarseX0, coarseY0 = new Array[Long](0)
   private val wide = ArrayBuffer.empty[Int]
   private val large = ArrayBuffer.empty[Int]
   private val grid = CellGrid()
   private var perFine = 1.0 // 1 / the fine cell side
+  // The fine grid's cells count from the lower-left corner of the fine shapes' bounds, so that
+  // a scene far from the origin gets cell indices as small as one near it (with cells counted
+  // from the origin they saturate at the Int range beyond about 6e8 m, and every shape there
+  // lands in one cell: quadratic). Pair order does not depend on the fine grid.
+  private var originX, originY = 0.0
   private var gridBuilt = false
   // Partners of the shape being placed: their order keys, and its coarse cells.
   private var groupKeys = new Array[Long](16)
   private var groupSize = 0
-  private var groupX0, groupY0 = 0
+  private var groupX0, groupY0 = 0L
   private var groupRows = 0L
   private var sorted = true
   // Query bookkeeping: the last query that found each shape.
@@ -65,6 +74,8 @@ private[sims] final class UniformGrid extends Broadphase:
     // Bounds, the large shapes, and the mean extent of the others for the fine grid's cells.
     var extentSum = 0.0
     var counted = 0
+    originX = Double.PositiveInfinity
+    originY = Double.PositiveInfinity
     var i = 0
     while i < count do
       val s = shapes(i)
@@ -75,15 +86,19 @@ private[sims] final class UniformGrid extends Broadphase:
         boxMinX(i) = x0; boxMinY(i) = y0; boxMaxX(i) = x1; boxMaxY(i) = y1
         coarseX0(i) = cell(x0, side)
         coarseY0(i) = cell(y0, side)
-        val cells = (cell(x1, side).toLong - coarseX0(i) + 1) * (cell(y1, side).toLong - coarseY0(i) + 1)
-        if cells > Defaults.LargeShapeCells then
+        if (cell(x1, side).toDouble - coarseX0(i) + 1) * (cell(y1, side).toDouble - coarseY0(i) + 1) > Defaults.LargeShapeCells then
           placement(i) = Large
           large += i
         else
           placement(i) = Fine
           extentSum += math.max(x1 - x0, y1 - y0)
           counted += 1
+          if x0 < originX then originX = x0
+          if y0 < originY then originY = y0
       i += 1
+    if counted == 0 then
+      originX = 0
+      originY = 0
     val fine =
       val mean = if counted == 0 then side else extentSum / counted * FineCellPerExtent
       if mean > 0 && mean <= side then mean else side
@@ -92,9 +107,9 @@ private[sims] final class UniformGrid extends Broadphase:
     i = 0
     while i < count do
       if placement(i) == Fine then
-        fineX0(i) = fineCell(boxMinX(i), perFine); fineX1(i) = fineCell(boxMaxX(i), perFine)
-        fineY0(i) = fineCell(boxMinY(i), perFine); fineY1(i) = fineCell(boxMaxY(i), perFine)
-        if (fineX1(i).toLong - fineX0(i) + 1) * (fineY1(i).toLong - fineY0(i) + 1) > FineShapeCells then
+        fineX0(i) = fineCell(boxMinX(i) - originX, perFine); fineX1(i) = fineCell(boxMaxX(i) - originX, perFine)
+        fineY0(i) = fineCell(boxMinY(i) - originY, perFine); fineY1(i) = fineCell(boxMaxY(i) - originY, perFine)
+        if cellCount(fineX0(i), fineX1(i), fineY0(i), fineY1(i)) > FineShapeCells then
           placement(i) = Wide
           wide += i
       i += 1
@@ -117,7 +132,7 @@ private[sims] final class UniformGrid extends Broadphase:
         groupSize = 0
         groupX0 = coarseX0(i)
         groupY0 = coarseY0(i)
-        groupRows = cell(boxMaxY(i), side).toLong - groupY0 + 1
+        groupRows = cell(boxMaxY(i), side) - groupY0 + 1
         if p == Wide then
           // Too big for the fine grid: tested against every earlier grid shape instead.
           var j = 0
@@ -171,9 +186,9 @@ private[sims] final class UniformGrid extends Broadphase:
     if !gridBuilt then buildGrid()
     queryStamp += 1
     foundIndices.clear()
-    val x0 = fineCell(minX, perFine); val x1 = fineCell(maxX, perFine)
-    val y0 = fineCell(minY, perFine); val y1 = fineCell(maxY, perFine)
-    if (x1.toLong - x0 + 1) * (y1.toLong - y0 + 1) > QueryCellLimit then
+    val x0 = fineCell(minX - originX, perFine); val x1 = fineCell(maxX - originX, perFine)
+    val y0 = fineCell(minY - originY, perFine); val y1 = fineCell(maxY - originY, perFine)
+    if cellCount(x0, x1, y0, y1) > QueryCellLimit then
       // A box over many cells: every shape's bounds are checked, which is cheaper.
       var i = 0
       while i < count do
@@ -225,8 +240,14 @@ private[sims] final class UniformGrid extends Broadphase:
       i += 1
     gridBuilt = true
 
+  /** How many pairs of shapes `findPairs` has tested so far: the work it does (for the tests
+    * that the grid stays linear).
+    */
+  private[sims] var pairTests: Long = 0
+
   /** Shapes j and i may collide: their bounds of this step overlap and the filter accepts them. */
   private def candidates(j: Int, i: Int): Boolean =
+    pairTests += 1
     sims.geometry.AABB.overlaps(boxMinX(j), boxMinY(j), boxMaxX(j), boxMaxY(j),
       boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && PairFilter.accepts(shapes(j), shapes(i))
 
@@ -242,7 +263,7 @@ private[sims] final class UniformGrid extends Broadphase:
     else
       val cx = math.max(coarseX0(j), coarseX0(i))
       val cy = math.max(coarseY0(j), coarseY0(i))
-      val rank = (cx.toLong - groupX0) * groupRows + (cy.toLong - groupY0)
+      val rank = (cx - groupX0) * groupRows + (cy - groupY0)
       val key = (rank << 32) | (Int.MaxValue - j).toLong
       var g = groupSize
       while g > 0 && groupKeys(g - 1) > key do
@@ -257,7 +278,7 @@ private[sims] final class UniformGrid extends Broadphase:
       boxMinX = new Array[Double](capacity); boxMinY = new Array[Double](capacity)
       boxMaxX = new Array[Double](capacity); boxMaxY = new Array[Double](capacity)
       placement = new Array[Byte](capacity)
-      coarseX0 = new Array[Int](capacity); coarseY0 = new Array[Int](capacity)
+      coarseX0 = new Array[Long](capacity); coarseY0 = new Array[Long](capacity)
       fineX0 = new Array[Int](capacity); fineY0 = new Array[Int](capacity)
       fineX1 = new Array[Int](capacity); fineY1 = new Array[Int](capacity)
       foundStamp = new Array[Int](capacity)
@@ -267,21 +288,26 @@ private[sims] object UniformGrid:
   /** Side of the internal fine grid's cells per mean extent of the shapes in it. */
   private val FineCellPerExtent = 1.5
   /** Shapes covering more fine cells than this are tested against all earlier shapes. */
-  private val FineShapeCells = 64L
+  private val FineShapeCells = 64.0
   /** A query box covering more fine cells than this checks every shape's bounds instead. */
-  private val QueryCellLimit = 4096L
+  private val QueryCellLimit = 4096.0
   private val Fine: Byte = 0
   private val Wide: Byte = 1
   private val Large: Byte = 2
   private val Ignored: Byte = 3
 
+  /** Number of cells from (x0, y0) to (x1, y1), inclusive, as a Double: with cell indices
+    * clamped to the Int range a Long product overflows (2^32 squared) and a huge shape would
+    * count as small.
+    */
+  private inline def cellCount(x0: Int, x1: Int, y0: Int, y1: Int): Double =
+    (x1.toDouble - x0 + 1) * (y1.toDouble - y0 + 1)
+
   /** The shape index in a group key. */
   private inline def groupShape(key: Long): Int = Int.MaxValue - (key & 0xffffffffL).toInt
 
-  /** Grid cell index of a coordinate: floor(coordinate / side), clamped to the Int range. */
-  private[sims] def cell(coordinate: Double, side: Double): Int =
-    val c = math.floor(coordinate / side)
-    if c < Int.MinValue then Int.MinValue else if c > Int.MaxValue then Int.MaxValue else c.toInt
+  /** Grid cell index of a coordinate: floor(coordinate / side) (clamped to the Long range). */
+  private[sims] def cell(coordinate: Double, side: Double): Long = math.floor(coordinate / side).toLong
 
   /** Cell of the internal fine grid: floor(coordinate * perSide), clamped to the Int range. */
   private inline def fineCell(coordinate: Double, perSide: Double): Int =

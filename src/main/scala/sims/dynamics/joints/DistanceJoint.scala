@@ -27,6 +27,9 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
   private val a1 = Anchor(node1, anchor1)
   private val a2 = Anchor(node2, anchor2)
 
+  /** The anchors and placements this joint was made from (for saving a world). */
+  private[sims] val origin: JointOrigin = JointOrigin(node1, anchor1, node2, anchor2)
+
   /** The distance kept between the connection points: their distance at creation. */
   val distance: Double = (anchor2 - anchor1).length
   if distance == 0 then

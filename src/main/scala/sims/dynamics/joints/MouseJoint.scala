@@ -57,6 +57,9 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
   checkNodes()
 
   private val point = Anchor(node2, anchor)
+
+  /** The anchors and placements this joint was made from (for saving a world). */
+  private[sims] val origin: JointOrigin = JointOrigin(node1, anchor, node2, anchor)
   private var _target = anchor
   private var _frequency = Defaults.MouseFrequency
   private var _dampingRatio = Defaults.MouseDampingRatio

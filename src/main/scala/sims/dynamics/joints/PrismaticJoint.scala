@@ -35,6 +35,9 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
 
   private val point1 = Anchor(node1, anchor1)
   private val point2 = Anchor(node2, anchor2)
+
+  /** The anchors and placements this joint was made from (for saving a world). */
+  private[sims] val origin: JointOrigin = JointOrigin(node1, anchor1, node2, anchor2)
   // Direction of the line in body 1's own frame.
   private val localAxis = (anchor2 - anchor1).unit.rotate(-node1.rotation)
   private val localAxisX = localAxis.x

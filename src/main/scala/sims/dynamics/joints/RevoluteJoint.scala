@@ -33,6 +33,9 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   private val point1 = Anchor(node1, anchor)
   private val point2 = Anchor(node2, anchor)
 
+  /** The anchors and placements this joint was made from (for saving a world). */
+  private[sims] val origin: JointOrigin = JointOrigin(node1, anchor, node2, anchor)
+
   /** Current world position of the pin on node1. */
   def connection1: Vector2D = point1.position
 

@@ -30,6 +30,9 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
 
   private val a1 = Anchor(node1, anchor1)
   private val a2 = Anchor(node2, anchor2)
+
+  /** The anchors and placements this joint was made from (for saving a world). */
+  private[sims] val origin: JointOrigin = JointOrigin(node1, anchor1, node2, anchor2)
   private var _damping = 0.0
 
   /** Damping coefficient in N s/m (default 0). */
@@ -62,6 +65,19 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
     val r2 = a2.arm
     node1.forceAt(f.x, f.y, r1.x, r1.y)
     node2.forceAt(-f.x, -f.y, r2.x, r2.y)
+
+  /** The stability number of this spring integrated explicitly over steps of `h` seconds:
+    * (k h^2 + 2 c h) / m, with 1/m = 1/m1 + 1/m2 + r1^2/I1 + r2^2/I2 (r the anchors' arms; an
+    * upper bound of the inverse mass along any direction). The step integrates velocities
+    * before positions (symplectic Euler); for a spring between two masses it is stable exactly
+    * when this number is below 4 (k h^2 / m < 4 undamped: omega h < 2).
+    */
+  private[sims] def stabilityNumber(h: Double): Double =
+    a1.update()
+    a2.update()
+    val inverseMass = node1.invMass + node2.invMass +
+      node1.invI * (a1.armX * a1.armX + a1.armY * a1.armY) + node2.invI * (a2.armX * a2.armX + a2.armY * a2.armY)
+    (springConstant * h * h + 2 * _damping * h) * inverseMass
 
   def correctVelocity(h: Double): Unit = ()
 

@@ -45,6 +45,7 @@ private[sims] final class ContactFinder:
     world.detector match
       case detector: GridDetector =>
         grid.gridSide = detector.gridSide
+        pairs.limit = detector.maxPairs
         grid.update(world.shapeBuffer, speculativeDistance)
         pairs.clear()
         grid.findPairs(pairs, inGridOrder = false)

@@ -1,0 +1,44 @@
+package sims.io
+
+import sims.dynamics.World
+
+/** Saves a world to bytes and loads it back: the loaded world steps to the same bits as the
+  * original would have (a saved game, a checkpoint of a long run).
+  *
+  * The format is the library's own, small and versioned (docs/saving.md describes it): big-endian
+  * binary, doubles as their exact IEEE 754 bits, in this order:
+  *   1. the magic bytes "SIMS" and the format version (an Int, [[FormatVersion]]);
+  *   2. settings: time step, iterations, gravity, the two flags, time, the grid detector's cell
+  *      side and pair limit, the solver (ClassicStep, or SoftStep with all its parameters);
+  *   3. bodies in order: each shape (Circle, Rectangle or RegularPolygon with its arguments and
+  *      material, collidable, placement), the body's frame (mass, inertia, the shapes' offsets)
+  *      and state (placement, velocities, force, torque, fixed); then each shape's transient
+  *      shapes, by index;
+  *   4. joints in order (Distance, Spring, Revolute, Prismatic, Mouse): bodies by index, the
+  *      anchors and body placements they were made from, their settings and soft-step impulses;
+  *   5. the soft step's contact table (the last step's contacts with their impulses), if the
+  *      world has stepped with the soft step.
+  * A world's own subclass (its `postStep`), user shape, joint, detector or solver types are not
+  * saved: `save` names the type it cannot write.
+  */
+object WorldCodec:
+  /** The version of the format `save` writes; `load` reads this one. */
+  val FormatVersion: Int = 1
+
+  /** The bytes of `world`'s state; fails with an IllegalArgumentException naming a type it cannot
+    * save.
+    */
+  def save(world: World): Array[Byte] = WorldWriter.write(world)
+
+  /** A new `World()` with the state in `bytes`; fails with an IllegalArgumentException if they are
+    * not a saved world of this format version.
+    */
+  def load(bytes: Array[Byte]): World = load(bytes, World())
+
+  /** Loads the state in `bytes` into `world`, which must be new (no bodies, no joints) and have
+    * the default kind of detector: e.g. `load(bytes, new World { override def postStep() = ... })`.
+    */
+  def load(bytes: Array[Byte], world: World): World = WorldReader.read(bytes, world)
+
+  /** The magic bytes that begin a saved world. */
+  private[io] val Magic: Int = 0x53494d53 // "SIMS"

@@ -1,0 +1,168 @@
+package sims.io
+
+import java.io.{ByteArrayInputStream, DataInputStream, EOFException}
+import sims.collision.GridDetector
+import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
+import sims.geometry.Vector2D
+import sims.solver.{ClassicStep, SoftStep}
+import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
+
+/** Reads a world written by [[WorldWriter]], in the same order. */
+private[io] object WorldReader:
+  import Tags.*
+
+  def read(bytes: Array[Byte], world: World): World =
+    if bytes == null then throw IllegalArgumentException("bytes must not be null")
+    if world == null then throw IllegalArgumentException("world must not be null")
+    if world.bodies.nonEmpty || world.joints.nonEmpty then
+      throw IllegalArgumentException(s"a world is loaded into a new world, but this one has ${world.bodies.length} " +
+        s"bodies and ${world.joints.length} joints")
+    val in = DataInputStream(ByteArrayInputStream(bytes))
+    try
+      if in.readInt() != WorldCodec.Magic then throw IllegalArgumentException("these bytes are not a saved SiMS world")
+      val version = in.readInt()
+      if version != WorldCodec.FormatVersion then
+        throw IllegalArgumentException(s"a saved world of format version $version; this library reads version " +
+          s"${WorldCodec.FormatVersion}")
+      settings(in, world)
+      val bodies = IndexedSeq.fill(in.readInt())(body(in))
+      bodies.foreach(world += _)
+      val shapes = world.shapes
+      for s <- shapes do s.transientShapes = Seq.fill(in.readInt())(shapes(in.readInt())).toSet
+      for _ <- 0 until in.readInt() do world += joint(in, bodies)
+      if in.readBoolean() then contacts(in, world)
+      if in.available() != 0 then throw IllegalArgumentException(s"${in.available()} bytes after the saved world")
+      world
+    catch
+      case e: EOFException => throw IllegalArgumentException("the saved world is cut short", e)
+      case e: IndexOutOfBoundsException => throw IllegalArgumentException("the saved world refers to a missing body or shape", e)
+
+  private def settings(in: DataInputStream, world: World): Unit =
+    world.timeStep = in.readDouble()
+    world.iterations = in.readInt()
+    world.gravity = Vector2D(in.readDouble(), in.readDouble())
+    world.enableCollisionDetection = in.readBoolean()
+    world.enablePositionCorrection = in.readBoolean()
+    world.time = in.readDouble()
+    world.detector match
+      case grid: GridDetector =>
+        grid.gridSide = in.readDouble()
+        grid.maxPairs = in.readInt()
+      case other =>
+        throw IllegalArgumentException(s"a world is loaded into a world with a GridDetector, not a ${other.getClass.getName}")
+    world.solver = in.readByte() match
+      case ClassicSolver => ClassicStep
+      case SoftSolver =>
+        val substeps = in.readInt()
+        val d = Array.fill(11)(in.readDouble())
+        SoftStep(substeps, d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7), d(8), d(9), d(10), in.readBoolean())
+      case tag => throw IllegalArgumentException(s"unknown solver tag $tag in the saved world")
+
+  private def body(in: DataInputStream): Body =
+    val count = in.readInt()
+    val shapes = new Array[Shape](count)
+    val frame = new Array[Double](3 * count)
+    val placements = new Array[Double](3 * count)
+    for i <- 0 until count do
+      val s = shape(in)
+      shapes(i) = s
+      placements(3 * i) = s.x; placements(3 * i + 1) = s.y; placements(3 * i + 2) = s.angle
+      frame(3 * i) = in.readDouble(); frame(3 * i + 1) = in.readDouble(); frame(3 * i + 2) = in.readDouble()
+      // Made at its offset from the centre: a body placed as far as 1e307 m would overflow the
+      // sums of its centre of mass, which are not needed here.
+      s.place(frame(3 * i), frame(3 * i + 1), frame(3 * i + 2))
+    val b = Body(shapes*)
+    for i <- 0 until count do shapes(i).place(placements(3 * i), placements(3 * i + 1), placements(3 * i + 2))
+    // The body's frame as it was computed when it was made, not again from the shapes' current
+    // placements (which would differ in the last bits).
+    for i <- 0 until count do
+      b.offsetX(i) = frame(3 * i); b.offsetY(i) = frame(3 * i + 1); b.relativeAngle(i) = frame(3 * i + 2)
+    b.freeMass = in.readDouble(); b.freeI = in.readDouble(); b.extent = in.readDouble()
+    b.x = in.readDouble(); b.y = in.readDouble(); b.angle = in.readDouble()
+    val (vx, vy, w) = (in.readDouble(), in.readDouble(), in.readDouble())
+    b.fx = in.readDouble(); b.fy = in.readDouble(); b.tau = in.readDouble()
+    b.allCentred = in.readBoolean()
+    b.fixed = in.readBoolean()
+    b.updateInverseMass()
+    b.vx = vx; b.vy = vy; b.w = w
+    b
+
+  private def shape(in: DataInputStream): Shape =
+    val s = in.readByte() match
+      case CircleShape =>
+        val radius = in.readDouble()
+        Circle(radius, in.readDouble())
+      case RectangleShape =>
+        val (halfWidth, halfHeight) = (in.readDouble(), in.readDouble())
+        Rectangle(halfWidth, halfHeight, in.readDouble())
+      case RegularPolygonShape =>
+        val (n, radius) = (in.readInt(), in.readDouble())
+        RegularPolygon(n, radius, in.readDouble())
+      case tag => throw IllegalArgumentException(s"unknown shape tag $tag in the saved world")
+    s.restitution = in.readDouble()
+    s.friction = in.readDouble()
+    s.place(in.readDouble(), in.readDouble(), in.readDouble())
+    s.collidable = in.readBoolean()
+    s
+
+  private def joint(in: DataInputStream, bodies: IndexedSeq[Body]): Joint =
+    val tag = in.readByte()
+    val node1 = if tag == MouseJointTag then null else bodies(in.readInt())
+    val node2 = bodies(in.readInt())
+    val anchor1 = Vector2D(in.readDouble(), in.readDouble())
+    val anchor2 = Vector2D(in.readDouble(), in.readDouble())
+    val placement = Array.fill(6)(in.readDouble())
+    // The joint is made again with its bodies where they were when it was first made: its
+    // anchors then have the same offsets and rotations to the bit.
+    def atOrigin[J](make: => J): J =
+      val saved = Array(node2.x, node2.y, node2.angle) ++ (if node1 == null then Array.empty[Double] else Array(node1.x, node1.y, node1.angle))
+      if node1 != null then { node1.x = placement(0); node1.y = placement(1); node1.angle = placement(2) }
+      node2.x = placement(3); node2.y = placement(4); node2.angle = placement(5)
+      try make
+      finally
+        node2.x = saved(0); node2.y = saved(1); node2.angle = saved(2)
+        if node1 != null then { node1.x = saved(3); node1.y = saved(4); node1.angle = saved(5) }
+    val j: Joint = tag match
+      case DistanceJointTag => atOrigin(DistanceJoint(node1, anchor1, node2, anchor2))
+      case SpringJointTag =>
+        val (k, length, damping) = (in.readDouble(), in.readDouble(), in.readDouble())
+        val spring = atOrigin(SpringJoint(node1, anchor1, node2, anchor2, k, length))
+        spring.damping = damping
+        spring
+      case RevoluteJointTag => atOrigin(RevoluteJoint(node1, node2, anchor1))
+      case PrismaticJointTag => atOrigin(PrismaticJoint(node1, anchor1, node2, anchor2))
+      case MouseJointTag =>
+        val maxForce = in.readDouble()
+        val mouse = atOrigin(MouseJoint(node2, anchor1, maxForce))
+        mouse.frequency = in.readDouble()
+        mouse.dampingRatio = in.readDouble()
+        mouse.angularDamping = in.readDouble()
+        mouse.target = Vector2D(in.readDouble(), in.readDouble())
+        mouse
+      case other => throw IllegalArgumentException(s"unknown joint tag $other in the saved world")
+    val impulses = in.readInt()
+    if impulses != j.softImpulse.length then
+      throw IllegalArgumentException(s"$j carries ${j.softImpulse.length} impulses, the saved world has $impulses")
+    for i <- 0 until impulses do j.softImpulse(i) = in.readDouble()
+    j
+
+  /** The soft step's committed contacts, keyed by the loaded shapes. */
+  private def contacts(in: DataInputStream, world: World): Unit =
+    val shapes = world.shapes
+    val table = Contacts()
+    for _ <- 0 until in.readInt() do
+      val (a, b) = (shapes(in.readInt()), shapes(in.readInt()))
+      val c = table.add(in.readInt())
+      table.shapeA(c) = a
+      table.shapeB(c) = b
+      table.bodyA(c) = a.body.index
+      table.bodyB(c) = b.body.index
+      table.keys(c) = ContactTable.key(a, b)
+      table.ids(2 * c) = in.readInt()
+      table.ids(2 * c + 1) = in.readInt()
+      table.side(c) = in.readInt()
+      val hot = table.offset(c)
+      for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do table.hot(hot + k) = in.readDouble()
+      for k <- 0 until ContactTable.ColdStride do table.cold(c * ContactTable.ColdStride + k) = in.readDouble()
+    world.workspace(classOf[SoftWorkspace], SoftWorkspace()).restoreState(table)

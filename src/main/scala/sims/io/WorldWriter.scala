@@ -1,0 +1,138 @@
+package sims.io
+
+import java.io.{ByteArrayOutputStream, DataOutputStream}
+import sims.collision.GridDetector
+import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.joints.{DistanceJoint, Joint, JointOrigin, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
+import sims.solver.{ClassicStep, SoftStep}
+import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
+
+/** Writes a world in [[WorldCodec]]'s format; the order of `write` is the format's. */
+private[io] object WorldWriter:
+  import Tags.*
+
+  def write(world: World): Array[Byte] =
+    val bytes = ByteArrayOutputStream()
+    val out = DataOutputStream(bytes)
+    out.writeInt(WorldCodec.Magic)
+    out.writeInt(WorldCodec.FormatVersion)
+    settings(out, world)
+    val shapeIndex = world.shapes.zipWithIndex.toMap
+    val bodyIndex = world.bodies.zipWithIndex.toMap
+    out.writeInt(world.bodies.length)
+    world.bodies.foreach(body(out, _))
+    for s <- world.shapes do
+      out.writeInt(s.transientShapes.size)
+      // Sorted: the same world gives the same bytes, whatever the set's order.
+      s.transientShapes.toSeq.map(t => shapeIndex.getOrElse(t, -1)).sorted.foreach(out.writeInt)
+    out.writeInt(world.joints.length)
+    world.joints.foreach(joint(out, _, bodyIndex))
+    contacts(out, world, shapeIndex)
+    out.flush()
+    bytes.toByteArray
+
+  private def settings(out: DataOutputStream, world: World): Unit =
+    out.writeDouble(world.timeStep)
+    out.writeInt(world.iterations)
+    out.writeDouble(world.gravity.x)
+    out.writeDouble(world.gravity.y)
+    out.writeBoolean(world.enableCollisionDetection)
+    out.writeBoolean(world.enablePositionCorrection)
+    out.writeDouble(world.time)
+    world.detector match
+      case grid: GridDetector =>
+        out.writeDouble(grid.gridSide)
+        out.writeInt(grid.maxPairs)
+      case other => unsupported("detector", other)
+    world.solver match
+      case ClassicStep => out.writeByte(ClassicSolver)
+      case soft: SoftStep =>
+        out.writeByte(SoftSolver)
+        out.writeInt(soft.substeps)
+        for d <- Seq(soft.contactHertz, soft.contactDampingRatio, soft.staticContactFactor, soft.jointHertz,
+            soft.jointDampingRatio, soft.contactSpeed, soft.restitutionThreshold, soft.linearSlop,
+            soft.speculativeDistance, soft.contactPersistence, soft.contactLoadDepth) do out.writeDouble(d)
+        out.writeBoolean(soft.directJoints)
+      case other => unsupported("solver", other)
+
+  private def body(out: DataOutputStream, b: Body): Unit =
+    out.writeInt(b.shapes.length)
+    for (s, i) <- b.shapes.zipWithIndex do
+      shape(out, s)
+      out.writeDouble(b.offsetX(i))
+      out.writeDouble(b.offsetY(i))
+      out.writeDouble(b.relativeAngle(i))
+    for d <- Seq(b.freeMass, b.freeI, b.extent, b.x, b.y, b.angle, b.vx, b.vy, b.w, b.fx, b.fy, b.tau) do
+      out.writeDouble(d)
+    out.writeBoolean(b.allCentred)
+    out.writeBoolean(b.fixed)
+
+  private def shape(out: DataOutputStream, s: Shape): Unit =
+    s match
+      case c: Circle =>
+        out.writeByte(CircleShape)
+        out.writeDouble(c.radius)
+      case r: Rectangle =>
+        out.writeByte(RectangleShape)
+        out.writeDouble(r.halfWidth)
+        out.writeDouble(r.halfHeight)
+      case p: RegularPolygon =>
+        out.writeByte(RegularPolygonShape)
+        out.writeInt(p.n)
+        out.writeDouble(p.radius)
+      case other => unsupported("shape", other)
+    for d <- Seq(s.density, s.restitution, s.friction, s.x, s.y, s.angle) do out.writeDouble(d)
+    out.writeBoolean(s.collidable)
+
+  private def joint(out: DataOutputStream, j: Joint, bodyIndex: Map[Body, Int]): Unit =
+    def origin(o: JointOrigin): Unit =
+      for d <- Seq(o.anchor1.x, o.anchor1.y, o.anchor2.x, o.anchor2.y, o.x1, o.y1, o.angle1, o.x2, o.y2, o.angle2) do
+        out.writeDouble(d)
+    def nodes(tag: Int, o: JointOrigin): Unit =
+      out.writeByte(tag)
+      out.writeInt(bodyIndex(j.node1))
+      out.writeInt(bodyIndex(j.node2))
+      origin(o)
+    j match
+      case d: DistanceJoint => nodes(DistanceJointTag, d.origin)
+      case s: SpringJoint =>
+        nodes(SpringJointTag, s.origin)
+        out.writeDouble(s.springConstant)
+        out.writeDouble(s.initialLength)
+        out.writeDouble(s.damping)
+      case r: RevoluteJoint => nodes(RevoluteJointTag, r.origin)
+      case p: PrismaticJoint => nodes(PrismaticJointTag, p.origin)
+      case m: MouseJoint =>
+        out.writeByte(MouseJointTag)
+        out.writeInt(bodyIndex(m.node2))
+        origin(m.origin)
+        for d <- Seq(m.maxForce, m.frequency, m.dampingRatio, m.angularDamping, m.target.x, m.target.y) do
+          out.writeDouble(d)
+      case other => unsupported("joint", other)
+    out.writeInt(j.softImpulse.length)
+    j.softImpulse.foreach(out.writeDouble)
+
+  /** The soft step's committed contacts, if the world has stepped with the soft step. */
+  private def contacts(out: DataOutputStream, world: World, shapeIndex: Map[Shape, Int]): Unit =
+    world.carriedStates.collectFirst { case soft: SoftWorkspace => soft.table.committed } match
+      case None => out.writeBoolean(false)
+      case Some(table) =>
+        out.writeBoolean(true)
+        // Contacts of shapes removed from the world since are never matched again: left out.
+        val kept = (0 until table.count).filter(c =>
+          shapeIndex.contains(table.shapeA(c)) && shapeIndex.contains(table.shapeB(c)))
+        out.writeInt(kept.length)
+        for c <- kept do
+          out.writeInt(shapeIndex(table.shapeA(c)))
+          out.writeInt(shapeIndex(table.shapeB(c)))
+          out.writeInt(table.pointCount(c))
+          out.writeInt(table.ids(2 * c))
+          out.writeInt(table.ids(2 * c + 1))
+          out.writeInt(table.side(c))
+          val hot = table.offset(c)
+          for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do out.writeDouble(table.hot(hot + k))
+          for k <- 0 until ContactTable.ColdStride do out.writeDouble(table.cold(c * ContactTable.ColdStride + k))
+
+  private def unsupported(what: String, value: AnyRef): Nothing =
+    throw IllegalArgumentException(s"cannot save a $what of type ${value.getClass.getName}: the format " +
+      s"knows the library's own kinds only")
