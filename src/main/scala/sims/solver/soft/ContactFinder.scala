@@ -46,7 +46,7 @@ private[sims] final class ContactFinder:
       case detector: GridDetector =>
         grid.gridSide = detector.gridSide
         pairs.limit = detector.maxPairs
-        grid.update(world.shapeBuffer, speculativeDistance)
+        grid.update(world.shapeBuffer, speculativeDistance, timeStep)
         pairs.clear()
         grid.findPairs(pairs, inGridOrder = false)
         narrowphase.update(detector.detectionMethods, detector.collisionMethods)
