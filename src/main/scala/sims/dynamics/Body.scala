@@ -56,6 +56,20 @@ final class Body(initialShapes: Shape*):
   /** The world this body is in, or null. */
   private[sims] var world: World = null
 
+  /** The bodies this one must not collide with: the other body of each joint in its world
+    * whose `collideConnected` is false, once per such joint (kept by the joints as they join
+    * and leave the world, so the pair filter reads a short list instead of every joint).
+    */
+  private[sims] var jointPartners: List[Body] = Nil
+
+  /** Adds one entry for `other` to the bodies this one must not collide with. */
+  private[sims] def addJointPartner(other: Body): Unit = jointPartners = other :: jointPartners
+
+  /** Removes one entry for `other` (another joint between the two may keep them apart). */
+  private[sims] def removeJointPartner(other: Body): Unit =
+    val i = jointPartners.indexWhere(_ eq other)
+    if i >= 0 then jointPartners = jointPartners.patch(i, Nil, 1)
+
   shapesChanged()
 
   /** Recomputes mass, centre of mass, inertia and the shapes' offsets from their positions. */

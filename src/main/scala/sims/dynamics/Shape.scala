@@ -74,6 +74,23 @@ abstract class Shape:
   /** Shapes this one never collides with (checked in both directions). */
   var transientShapes: Set[Shape] = Set.empty
 
+  // Collision filtering (Box2D's rule, see sims.collision.PairFilter). Every Int is a valid
+  // value of each, so there is nothing to check.
+
+  /** The collision categories this shape belongs to, one bit each (default 1: the first). */
+  var categoryBits: Int = sims.Defaults.CategoryBits
+
+  /** The categories this shape collides with, one bit each (default -1: all). Two shapes
+    * collide only if each one's mask has a bit of the other's categories (unless a group
+    * decides).
+    */
+  var maskBits: Int = sims.Defaults.MaskBits
+
+  /** The collision group (default 0: none). Two shapes of the same positive group always
+    * collide, two of the same negative group never; otherwise categories and masks decide.
+    */
+  var groupIndex: Int = sims.Defaults.GroupIndex
+
   private[sims] var _body: Body = null
 
   /** The body this shape belongs to, or null before it is part of one. */

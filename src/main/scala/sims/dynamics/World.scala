@@ -124,13 +124,16 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     shapesChanged = true
     this
 
-  /** Adds a joint; fails if it is already in this world. Its bodies must be in the world
-    * by the next step.
+  /** Adds a joint; fails if it is already in this or another world. Its bodies must be in
+    * the world by the next step.
     */
   def +=(joint: Joint): this.type =
     if joint == null then throw IllegalArgumentException("joint must not be null")
     if jointBuffer.exists(_ eq joint) then throw IllegalArgumentException(s"joint $joint is already in this world")
+    if joint.world != null then throw IllegalArgumentException(s"joint $joint is already in another world")
     jointBuffer += joint
+    joint.world = this
+    if !joint.collideConnected then joint.keepApart(true)
     this
 
   /** Removes a body (joints on it must be removed too before the next step). */
@@ -150,7 +153,10 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   /** Removes a joint. */
   def -=(joint: Joint): this.type =
     val i = jointBuffer.indexWhere(_ eq joint)
-    if i >= 0 then jointBuffer.remove(i)
+    if i >= 0 then
+      jointBuffer.remove(i)
+      joint.world = null
+      if !joint.collideConnected then joint.keepApart(false)
     this
 
   /** Run after each step (phase 7); override it to observe or steer the simulation. */
