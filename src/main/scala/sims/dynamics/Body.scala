@@ -70,7 +70,11 @@ final class Body(initialShapes: Shape*):
     val i = jointPartners.indexWhere(_ eq other)
     if i >= 0 then jointPartners = jointPartners.patch(i, Nil, 1)
 
+  // An edge has no mass: it may only be part of a fixed body (see Edge).
+  private val hasEdge = shapes.exists(_.isInstanceOf[Edge])
+
   shapesChanged()
+  if hasEdge then fixed = true
 
   /** Recomputes mass, centre of mass, inertia and the shapes' offsets from their positions. */
   private[sims] def shapesChanged(): Unit =
@@ -80,8 +84,13 @@ final class Body(initialShapes: Shape*):
       m += s.mass
       sx += s.x * s.mass
       sy += s.y * s.mass
-    x = sx / m
-    y = sy / m
+    if m > 0 then
+      x = sx / m
+      y = sy / m
+    else
+      // Only edges, which have no mass: the middle of their centres stands for the centre.
+      x = shapes.map(_.x).sum / shapes.length
+      y = shapes.map(_.y).sum / shapes.length
     var inertia = 0.0
     extent = 0
     val c = math.cos(-angle)
@@ -198,8 +207,12 @@ final class Body(initialShapes: Shape*):
   /** Whether the body is fixed (immovable by forces and impulses). */
   def fixed: Boolean = _fixed
 
-  /** Fixes or frees the body; fixing it also sets both velocities to 0. */
+  /** Fixes or frees the body; fixing it also sets both velocities to 0. A body with an
+    * [[Edge]] cannot be freed.
+    */
   def fixed_=(value: Boolean): Unit =
+    if !value && hasEdge then
+      throw IllegalArgumentException(s"fixed must stay true for a body with an Edge (edges have no mass), got false")
     placements += 1 // the inverse masses change: cached effective masses must be recomputed
     _fixed = value
     if value then

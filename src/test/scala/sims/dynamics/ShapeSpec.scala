@@ -46,6 +46,10 @@ class ShapeSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     agreesWithIntegration(HullPolygonSpec.hulls)
   }
 
+  test("mass and inertia of capsules agree with numeric integration") {
+    agreesWithIntegration(for hl <- Gen.choose(0.05, 5.0); r <- Gen.choose(0.05, 3.0) yield Capsule(hl, r, 2))
+  }
+
   test("closed forms of the SPEC") {
     val c = Circle(2, 3)
     c.volume shouldBe math.Pi * 4
