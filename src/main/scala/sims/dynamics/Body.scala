@@ -189,6 +189,7 @@ final class Body(initialShapes: Shape*):
     Vector2D.requireFinite("pos", newPos)
     x = newPos.x; y = newPos.y
     placeShapes()
+    if world != null then world.shapesMoved()
 
   /** Rotation in radians, counter-clockwise; 0 when the body was made. */
   def rotation: Double = angle
@@ -197,6 +198,7 @@ final class Body(initialShapes: Shape*):
   def rotation_=(newRotation: Double): Unit =
     angle = Vector2D.requireFinite("rotation", newRotation)
     placeShapes()
+    if world != null then world.shapesMoved()
 
   /** Mass in kg: the shapes' sum, or positive infinity when fixed. */
   def mass: Double = if _fixed then Double.PositiveInfinity else freeMass

@@ -1,6 +1,6 @@
 package sims.dynamics
 
-import sims.geometry.{AABB, Projection, Segment, Vector2D}
+import sims.geometry.{AABB, Projection, RayMath, Segment, Vector2D}
 
 /** A shape made of the points within `radius` of a straight segment, its core: the segment of
   * length 2 `halfLength` through the shape's centre along its rotation (at rotation 0 from
@@ -68,6 +68,11 @@ abstract class RoundedSegment private[sims] () extends Shape:
   def contains(point: Vector2D): Boolean =
     refresh()
     Segment.distance(endXs(0), endYs(0), endXs(1), endYs(1), point.x, point.y) <= radius
+
+  override private[sims] def castRay(x1: Double, y1: Double, dx: Double, dy: Double, maxFraction: Double,
+      hit: RayMath.Hit): Boolean =
+    refresh()
+    RayMath.capsule(endXs(0), endYs(0), endXs(1), endYs(1), radius, x1, y1, dx, dy, maxFraction, hit)
 
   override private[sims] def boundingRadius: Double = halfLength + radius
   override private[sims] def projectMin(ax: Double, ay: Double): Double =

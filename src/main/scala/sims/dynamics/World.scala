@@ -2,7 +2,8 @@ package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
-import sims.collision.{Collision, Contact, Detector, GridDetector}
+import sims.collision.{Collision, Contact, Detector, GridDetector, RayHit, ShapeQueries}
+import sims.geometry.AABB
 import sims.dynamics.joints.Joint
 import sims.geometry.Vector2D
 import sims.solver.{CarriedState, ClassicStep, Solver}
@@ -39,6 +40,9 @@ class World(makeDetector: World => Detector = GridDetector(_)):
 
   /** The collision detector used by `step()`. */
   val detector: Detector = makeDetector(this)
+
+  // The queries' own broadphase, brought up to date at the first query after a change.
+  private val queries = ShapeQueries(this)
 
   /** Whether collisions are detected and corrected. */
   var enableCollisionDetection: Boolean = true
@@ -109,6 +113,44 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     */
   def contacts: IndexedSeq[Contact] = _solver.contacts(this)
 
+  /** The nearest shape that the straight path from `from` to `to` enters, among those `filter`
+    * accepts (all by default), with where and at what fraction of the way; None if it enters
+    * none. Shapes it starts inside are not hit; a user's shape kind is hit only if its class
+    * overrides `Shape.rayCast`. Looks at the shapes near the path only (through a grid).
+    */
+  def rayCast(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape): Option[RayHit] =
+    queries.rayCast(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to), requireFilter(filter))
+
+  /** Every shape the path from `from` to `to` enters, as `rayCast` finds them, nearest first
+    * (shapes hit at the same fraction in the order they joined the world).
+    */
+  def rayCastAll(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape): IndexedSeq[RayHit] =
+    queries.rayCastAll(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to), requireFilter(filter))
+
+  /** The shapes whose bounding boxes overlap (or touch) `box`, among those `filter` accepts, in
+    * the order they joined the world. Looks at the shapes near the box only.
+    */
+  def query(box: AABB, filter: Shape => Boolean = World.AnyShape): IndexedSeq[Shape] =
+    if box == null then throw IllegalArgumentException("box must not be null")
+    Vector2D.requireFinite("box.minVertex", box.minVertex)
+    Vector2D.requireFinite("box.maxVertex", box.maxVertex)
+    if box.minVertex.x > box.maxVertex.x || box.minVertex.y > box.maxVertex.y then
+      throw IllegalArgumentException(s"box must have its minVertex below and left of its maxVertex, got $box")
+    queries.query(box.minVertex.x, box.minVertex.y, box.maxVertex.x, box.maxVertex.y, requireFilter(filter))
+
+  /** The shapes that contain `point` (world coordinates), among those `filter` accepts, in the
+    * order they joined the world (the viewer picks the last free one).
+    */
+  def shapesAt(point: Vector2D, filter: Shape => Boolean = World.AnyShape): IndexedSeq[Shape] =
+    queries.shapesAt(Vector2D.requireFinite("point", point), requireFilter(filter))
+
+  private def requireFilter(filter: Shape => Boolean): Shape => Boolean =
+    if filter == null then throw IllegalArgumentException("filter must not be null")
+    filter
+
+  /** Tells the queries that shapes moved, joined or left: they take the bounds again when next asked. */
+  private[sims] def shapesMoved(): Unit = queries.stale = true
+
   /** Adds a body; fails if it is already in this or another world. */
   def +=(body: Body): this.type =
     if body == null then throw IllegalArgumentException("body must not be null")
@@ -122,6 +164,7 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       nextShapeIndex += 1
     shapeList ++= body.shapes
     shapesChanged = true
+    shapesMoved()
     this
 
   /** Adds a joint; fails if it is already in this or another world. Its bodies must be in
@@ -148,6 +191,7 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       for j <- i until bodyBuffer.length do bodyBuffer(j).index = j
       shapeList.filterInPlace(_.body ne body)
       shapesChanged = true
+      shapesMoved()
     this
 
   /** Removes a joint. */
@@ -170,7 +214,9 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     checkJoints()
     beforeStep.save(this, withSolvers = false)
     startSolverStep()
+    shapesMoved()
     _solver.step(this)
+    shapesMoved() // also after: a query made during the step (by a joint, say) saw other positions
     postStep()
 
   /** A copy of the dynamic state of every body and of the time, to `restore` later. */
@@ -180,7 +226,9 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     state
 
   /** Puts the world back into a state taken by `snapshot()`; the bodies must be the same. */
-  def restore(state: WorldState): Unit = state.load(this)
+  def restore(state: WorldState): Unit =
+    state.load(this)
+    shapesMoved()
 
   private[sims] def time_=(t: Double): Unit = _time = t
 
@@ -256,6 +304,11 @@ class World(makeDetector: World => Detector = GridDetector(_)):
 
   // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
   private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
+
+/** Defaults of the world's methods. */
+object World:
+  /** The queries' default filter: every shape. */
+  val AnyShape: Shape => Boolean = _ => true
 
 /** What the world's guard checks after a stage of a step. */
 private[sims] enum Checked(val quantity: String):

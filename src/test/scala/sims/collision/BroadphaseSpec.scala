@@ -119,6 +119,29 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     }
   }
 
+  test("a ray is offered only the shapes near it, each once, and the walk stops at the limit") {
+    val world = World()
+    for i <- 0 until 100; j <- 0 until 100 do
+      val c = Circle(0.1, 1)
+      c.pos = Vector2D(i * 0.3, j * 0.3)
+      world += c.asBody
+    val grid = sims.collision.broadphase.UniformGrid()
+    grid.update(world.shapeBuffer, 0)
+    val offered = scala.collection.mutable.ArrayBuffer.empty[Shape]
+    def walk(fromX: Double, fromY: Double, toX: Double, toY: Double, stopAt: Double): Unit =
+      offered.clear()
+      grid.rayCast(fromX, fromY, toX, toY, new sims.collision.broadphase.Broadphase.RayVisitor:
+        def visit(shape: Shape, limit: Double): Double = { offered += shape; math.min(limit, stopAt) })
+    // Along the row y = 0.3 across the whole grid: its 100 balls and none of the other 9,900 far from it.
+    walk(-1, 0.3, 31, 0.3, 1)
+    offered.size shouldBe offered.distinct.size
+    offered.count(s => math.abs(s.pos.y - 0.3) < 1e-9) shouldBe 100
+    offered.forall(s => math.abs(s.pos.y - 0.3) < 0.31) shouldBe true
+    // A visitor that wants nothing beyond a tenth of the ray stops the walk there.
+    walk(-1, 0.3, 31, 0.3, 0.1)
+    offered.map(_.pos.x).max should be < 3.3
+  }
+
   test("bounds enlarged by a margin make pairs of shapes that are that close") {
     val world = World()
     val a = Circle(1, 1)

@@ -53,8 +53,10 @@ private[sims] final class UniformGrid extends Broadphase:
   private var foundStamp = new Array[Int](0)
   private var queryStamp = 0
   private val foundIndices = ArrayBuffer.empty[Int]
+  // The box around the bounds of the shapes in the fine grid: a ray's walk is clipped to it.
+  private var fineMinX, fineMinY, fineMaxX, fineMaxY = 0.0
 
-  def update(shapes: Array[Shape], margin: Double): Unit =
+  def update(shapes: Array[Shape], margin: Double, everyShape: Boolean = false): Unit =
     this.shapes = shapes
     count = shapes.length
     ensureCapacity(count)
@@ -67,7 +69,7 @@ private[sims] final class UniformGrid extends Broadphase:
     var i = 0
     while i < count do
       val s = shapes(i)
-      if !s.collidable then placement(i) = Ignored
+      if !s.collidable && !everyShape then placement(i) = Ignored
       else
         val x0 = s.minX - margin; val y0 = s.minY - margin
         val x1 = s.maxX + margin; val y1 = s.maxY + margin
@@ -88,6 +90,8 @@ private[sims] final class UniformGrid extends Broadphase:
       if mean > 0 && mean <= side then mean else side
     // Fine cells by multiplication: any consistent cell function serves the internal grid.
     perFine = 1 / fine
+    fineMinX = Double.PositiveInfinity; fineMinY = Double.PositiveInfinity
+    fineMaxX = Double.NegativeInfinity; fineMaxY = Double.NegativeInfinity
     i = 0
     while i < count do
       if placement(i) == Fine then
@@ -96,6 +100,9 @@ private[sims] final class UniformGrid extends Broadphase:
         if (fineX1(i).toLong - fineX0(i) + 1) * (fineY1(i).toLong - fineY0(i) + 1) > FineShapeCells then
           placement(i) = Wide
           wide += i
+        else
+          fineMinX = math.min(fineMinX, boxMinX(i)); fineMinY = math.min(fineMinY, boxMinY(i))
+          fineMaxX = math.max(fineMaxX, boxMaxX(i)); fineMaxY = math.max(fineMaxY, boxMaxY(i))
       i += 1
     gridBuilt = false
 
@@ -192,6 +199,68 @@ private[sims] final class UniformGrid extends Broadphase:
       found += shapes(foundIndices(k))
       k += 1
 
+  def rayCast(fromX: Double, fromY: Double, toX: Double, toY: Double, visitor: Broadphase.RayVisitor): Unit =
+    if !gridBuilt then buildGrid()
+    queryStamp += 1
+    val dx = toX - fromX
+    val dy = toY - fromY
+    var limit = 1.0
+    // Shapes outside the fine grid first, each once: a ground among them limits the walk.
+    var k = 0
+    while k < large.length do { limit = offer(large(k), fromX, fromY, dx, dy, limit, visitor); k += 1 }
+    k = 0
+    while k < wide.length do { limit = offer(wide(k), fromX, fromY, dx, dy, limit, visitor); k += 1 }
+    // Then the fine grid's cells along the ray, in order (a digital differential analyser),
+    // over the part of the ray inside the box of the grid's shapes.
+    val enter = rayEntry(fineMinX, fineMinY, fineMaxX, fineMaxY, fromX, fromY, dx, dy, limit)
+    val leave = rayExit(fineMinX, fineMinY, fineMaxX, fineMaxY, fromX, fromY, dx, dy, limit)
+    if enter <= leave then
+      var cx = fineCell(fromX + enter * dx, perFine)
+      var cy = fineCell(fromY + enter * dy, perFine)
+      val endX = fineCell(fromX + leave * dx, perFine)
+      val endY = fineCell(fromY + leave * dy, perFine)
+      val stepX = if endX > cx then 1 else -1
+      val stepY = if endY > cy then 1 else -1
+      val cellSide = 1 / perFine
+      // Fractions of the ray at its next crossings of a vertical and a horizontal cell border,
+      // and between two such crossings.
+      var nextX = if dx > 0 then ((cx + 1L) * cellSide - fromX) / dx else if dx < 0 then (cx * cellSide - fromX) / dx
+        else Double.PositiveInfinity
+      var nextY = if dy > 0 then ((cy + 1L) * cellSide - fromY) / dy else if dy < 0 then (cy * cellSide - fromY) / dy
+        else Double.PositiveInfinity
+      val deltaX = if dx != 0 then cellSide / math.abs(dx) else Double.PositiveInfinity
+      val deltaY = if dy != 0 then cellSide / math.abs(dy) else Double.PositiveInfinity
+      // Exactly the cells between the two ends: rounding of the crossings cannot run away.
+      var steps = math.abs(endX.toLong - cx) + math.abs(endY.toLong - cy)
+      var walking = true
+      while walking do
+        var entry = grid.firstEntry(cx, cy)
+        while entry >= 0 do
+          limit = offer(grid.shapeOf(entry), fromX, fromY, dx, dy, limit, visitor)
+          entry = grid.nextEntry(entry)
+        // Shapes crossed before `limit` lie in the cells before it, all walked by now.
+        if steps == 0 || math.min(nextX, nextY) > limit then walking = false
+        else
+          if nextX < nextY && cx != endX || cy == endY then
+            cx += stepX
+            nextX += deltaX
+          else
+            cy += stepY
+            nextY += deltaY
+          steps -= 1
+
+  /** Offers shape i to the visitor once per query, if the ray crosses its bounds before
+    * `limit`; returns the visitor's new limit (or the old one).
+    */
+  private def offer(i: Int, fromX: Double, fromY: Double, dx: Double, dy: Double, limit: Double,
+      visitor: Broadphase.RayVisitor): Double =
+    if foundStamp(i) == queryStamp then limit
+    else
+      foundStamp(i) = queryStamp
+      val enter = rayEntry(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), fromX, fromY, dx, dy, limit)
+      val leave = rayExit(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), fromX, fromY, dx, dy, limit)
+      if enter <= leave then visitor.visit(shapes(i), limit) else limit
+
   /** Adds shape i to the query's result once, if its bounds overlap the box. */
   private def consider(i: Int, minX: Double, minY: Double, maxX: Double, maxY: Double): Unit =
     if foundStamp(i) != queryStamp &&
@@ -264,6 +333,31 @@ private[sims] object UniformGrid:
 
   /** The shape index in a group key. */
   private inline def groupShape(key: Long): Int = Int.MaxValue - (key & 0xffffffffL).toInt
+
+  /** The fraction at which the ray from (x, y) along (dx, dy) enters the box, at least 0; more
+    * than its `rayExit` when it misses the box before `limit` (slabs: the later of the two axes'
+    * entries, the earlier of their exits).
+    */
+  private def rayEntry(minX: Double, minY: Double, maxX: Double, maxY: Double, x: Double, y: Double, dx: Double,
+      dy: Double, limit: Double): Double =
+    math.max(0.0, math.max(slabEntry(minX, maxX, x, dx), slabEntry(minY, maxY, y, dy)))
+
+  /** The fraction at which the ray leaves the box, at most `limit` (see `rayEntry`). */
+  private def rayExit(minX: Double, minY: Double, maxX: Double, maxY: Double, x: Double, y: Double, dx: Double,
+      dy: Double, limit: Double): Double =
+    math.min(limit, math.min(slabExit(minX, maxX, x, dx), slabExit(minY, maxY, y, dy)))
+
+  /** Where the line p + t d enters the slab [min, max] of one axis (-infinity if it starts in it
+    * and runs along it, +infinity if it runs along it outside).
+    */
+  private inline def slabEntry(min: Double, max: Double, p: Double, d: Double): Double =
+    if d > 0 then (min - p) / d else if d < 0 then (max - p) / d
+    else if p >= min && p <= max then Double.NegativeInfinity else Double.PositiveInfinity
+
+  /** Where the line leaves the slab (see `slabEntry`). */
+  private inline def slabExit(min: Double, max: Double, p: Double, d: Double): Double =
+    if d > 0 then (max - p) / d else if d < 0 then (min - p) / d
+    else if p >= min && p <= max then Double.PositiveInfinity else Double.NegativeInfinity
 
   /** Grid cell index of a coordinate: floor(coordinate / side), clamped to the Int range. */
   private[sims] def cell(coordinate: Double, side: Double): Int =
