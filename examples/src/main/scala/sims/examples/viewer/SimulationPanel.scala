@@ -120,7 +120,8 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
     release()
     val point = _viewport.toWorld(x, y)
     val world = _staged.world
-    world.bodies.reverseIterator.find(b => !b.fixed && b.contains(point)) match
+    // The last free body joined (drawn on top) among the shapes under the pointer.
+    world.shapesAt(point).reverseIterator.map(_.body).find(!_.fixed) match
       case Some(body) =>
         val joint = MouseJoint(body, point, SimulationPanel.DragForcePerKilogram * body.mass)
         world += joint
