@@ -37,7 +37,8 @@ object HeadlessRun:
     val gifFile = File(directory, s"$base.gif")
     val pngFile = File(directory, s"$base.png")
     val csvFile = File(directory, s"$base.csv")
-    val world = scene.build().world
+    val staged = scene.build()
+    val world = staged.world
     val viewport = Viewport.fit(scene.view, Width, Height)
     val totalSteps = math.round(seconds / world.timeStep)
     out.println(s"${scene.name}: ${scene.description}")
@@ -45,7 +46,8 @@ object HeadlessRun:
       f"$seconds%.2f s = $totalSteps steps")
     val bar = ProgressBar(seconds, out, interactive)
     def picture(smooth: Boolean) =
-      Renderer.image(world, viewport, RenderOptions(caption = f"${scene.name}  t = ${world.time}%.2f s", smooth = smooth))
+      Renderer.image(world, viewport, RenderOptions(caption = f"${scene.name}  t = ${world.time}%.2f s", smooth = smooth),
+        staged.overlay())
     var steps = 0L
     var stepNanos = 0L
     var nextFrame = 0

@@ -95,7 +95,7 @@ final class SimulationPanel(initialScene: Scene) extends JPanel:
     val height = math.max(1, getHeight)
     if _viewport.width != width || _viewport.height != height then
       _viewport = if viewMoved then _viewport.resized(width, height) else Viewport.fit(_scene.view, width, height)
-    Renderer.draw(graphics.asInstanceOf[Graphics2D], _staged.world, _viewport, renderOptions)
+    Renderer.draw(graphics.asInstanceOf[Graphics2D], _staged.world, _viewport, renderOptions, _staged.overlay())
 
   /** Zooms by `factor` about pixel (x, y). */
   def zoom(factor: Double, x: Double, y: Double): Unit =
