@@ -67,11 +67,19 @@ class ScenesSpec extends AnyFunSuite:
       assert(notFinite(staged.world).isEmpty, scene.name)
       assert(staged.world.bodies.size >= bodies, scene.name)
 
-  for scene <- Scenes.all do
+  /** Scenes also run under the soft step here (the others are the soft step's own tests' concern). */
+  private val SoftToo: Set[Scene] = Set(Queries, Filtering, Shapes)
+
+  for
+    scene <- Scenes.all
+    soft <- if SoftToo(scene) then Seq(false, true) else Seq(false)
+  do
     val seconds = SecondsOf.getOrElse(scene.name, Seconds)
-    test(s"${scene.name} runs $seconds s without NaN, its bodies inside ${scene.region}"):
+    val under = if soft then " under the soft step" else ""
+    test(s"${scene.name} runs $seconds s$under without NaN, its bodies inside ${scene.region}"):
       val staged = scene.build()
       val world = staged.world
+      if soft then world.solver = sims.solver.SoftStep()
       val steps = math.round(seconds / world.timeStep).toInt
       val start = System.nanoTime()
       var firstNaN: Option[String] = None
