@@ -30,8 +30,9 @@ abstract class RoundedSegment private[sims] () extends Shape:
       val uy = math.sin(angle)
       endXs(0) = x - halfLength * ux; endYs(0) = y - halfLength * uy
       endXs(1) = x + halfLength * ux; endYs(1) = y + halfLength * uy
-      normalXs(0) = uy; normalYs(0) = -ux
-      normalXs(1) = -uy; normalYs(1) = ux
+      // 0.0 - u rather than -u: no negative zeros in printed normals.
+      normalXs(0) = uy; normalYs(0) = 0.0 - ux
+      normalXs(1) = 0.0 - uy; normalYs(1) = ux
       current = true
 
   /** First end of the core segment, world coordinates. */
