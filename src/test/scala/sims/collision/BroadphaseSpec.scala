@@ -20,33 +20,8 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
       if a.AABB.overlaps(b.AABB) && PairFilter.accepts(a, b)
     yield (a, b)
 
-  private val shape: Gen[Shape] =
-    for
-      size <- Gen.oneOf(Gen.choose(0.01, 0.3), Gen.choose(0.3, 3.0), Gen.choose(3.0, 30.0))
-      kind <- Gen.choose(0, 2)
-      x <- Gen.choose(-20.0, 20.0)
-      y <- Gen.choose(-20.0, 20.0)
-      rotation <- Gen.choose(0.0, 3.0)
-    yield
-      val s = kind match
-        case 0 => Circle(size, 1)
-        case 1 => Rectangle(size, size / 2, 1)
-        case _ => RegularPolygon(5, size, 1)
-      s.pos = Vector2D(x, y)
-      s.rotation = rotation
-      s
-
-  private def scene(shapes: Seq[Shape], gridSide: Double): World =
-    val world = World()
-    world.detector.asInstanceOf[GridDetector].gridSide = gridSide
-    // One huge ground box, and some bodies of two shapes.
-    val ground = Rectangle(200, 5, 1)
-    ground.pos = Vector2D(0, -10)
-    world += ground.asBody
-    shapes.grouped(2).zipWithIndex.foreach { (group, i) =>
-      if i % 3 == 0 then world += Body(group*) else group.foreach(s => world += s.asBody)
-    }
-    world
+  private val shape: Gen[Shape] = RandomScenes.shape(kinds = 3)
+  private def scene(shapes: Seq[Shape], gridSide: Double): World = RandomScenes.scene(shapes, gridSide)
 
   test("grid pairs equal brute-force pairs, in order, each once") {
     forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0, 7.0), minSuccessful(40)) { (shapes, side) =>

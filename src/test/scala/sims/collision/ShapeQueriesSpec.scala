@@ -4,7 +4,7 @@ import org.scalacheck.Gen
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
-import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.{Circle, Rectangle, Shape, World}
 import sims.geometry.{AABB, ConvexPolygon, Projection, Vector2D}
 
 /** The world's queries against brute force over random scenes (ray casts to the exact fraction),
@@ -12,40 +12,9 @@ import sims.geometry.{AABB, ConvexPolygon, Projection, Vector2D}
   */
 class ShapeQueriesSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
 
-  private val shape: Gen[Shape] =
-    for
-      size <- Gen.oneOf(Gen.choose(0.05, 0.5), Gen.choose(0.5, 3.0), Gen.choose(3.0, 20.0))
-      kind <- Gen.choose(0, 5)
-      x <- Gen.choose(-20.0, 20.0)
-      y <- Gen.choose(-20.0, 20.0)
-      rotation <- Gen.choose(0.0, 3.0)
-    yield
-      val s = kind match
-        case 0 => Circle(size, 1)
-        case 1 => Rectangle(size, size / 3, 1)
-        case 2 => RegularPolygon(5, size, 1)
-        case 3 => HullPolygon(Seq(Vector2D(0, 0), Vector2D(size, 0), Vector2D(0.2 * size, size)), 1)
-        case 4 => Capsule(size, size / 4, 1)
-        case _ => Edge(Vector2D(-size, 0), Vector2D(size, 0))
-      s.pos = Vector2D(x, y)
-      s.rotation = rotation
-      s
-
-  /** A world of a huge ground, the shapes (some of them sharing a body, some not collidable),
-    * with the given grid side.
-    */
+  private val shape: Gen[Shape] = RandomScenes.shape(kinds = 6)
   private def scene(shapes: Seq[Shape], gridSide: Double): World =
-    val world = World()
-    world.detector.asInstanceOf[GridDetector].gridSide = gridSide
-    val ground = Rectangle(200, 5, 1)
-    ground.pos = Vector2D(0, -30)
-    world += ground.asBody
-    shapes.grouped(2).zipWithIndex.foreach { (group, i) =>
-      if i % 3 == 0 && !group.exists(_.isInstanceOf[Edge]) then world += Body(group*)
-      else group.foreach(s => world += s.asBody)
-      if i % 4 == 1 then group.head.collidable = false // queries see every shape
-    }
-    world
+    RandomScenes.scene(shapes, gridSide, someNotCollidable = true) // queries see every shape
 
   private val point: Gen[Vector2D] = for x <- Gen.choose(-25.0, 25.0); y <- Gen.choose(-35.0, 25.0) yield Vector2D(x, y)
   private val ray: Gen[(Vector2D, Vector2D)] =

@@ -171,6 +171,21 @@ object ManifoldFixtures:
     // Pushed in at most halfway to the centre: distinct centres keep the laws well defined.
     at(if gap > 0 then far else math.max(0.5 * near, near + gap))
 
+  /** Pairs of `first` and `second` shapes (made at the given centres), from deep overlap to
+    * farther apart than the speculative distance (or at the `gaps` given).
+    */
+  def pairsOf[A <: Shape, B <: Shape](first: (Double, Double) => Gen[A], second: (Double, Double) => Gen[B],
+      gaps: Gen[Double] = gap): Gen[(A, B)] =
+    for
+      p <- position
+      a <- first(p.x, p.y)
+      b <- second(0, 0)
+      u <- direction
+      g <- gaps
+    yield
+      placeAtGap(a, b, u, g)
+      (a, b)
+
   /** A unit direction. */
   val direction: Gen[Vector2D] = Gen.choose(-math.Pi, math.Pi).map(angle => Vector2D(math.cos(angle), math.sin(angle)))
 

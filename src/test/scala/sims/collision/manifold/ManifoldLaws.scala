@@ -90,18 +90,3 @@ trait ManifoldLaws extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     val u = (shape.vertex2 - shape.vertex1).unit
     val sine = math.min(1.0, math.abs(u.x * manifold.normalX + u.y * manifold.normalY))
     shape.radius * (1 - math.sqrt(1 - sine * sine))
-
-  /** Pairs of `first` and `second` shapes (made at the given centres), from deep overlap to
-    * farther apart than the speculative distance.
-    */
-  protected def pairsOf[A <: Shape, B <: Shape](first: (Double, Double) => Gen[A],
-      second: (Double, Double) => Gen[B], gaps: Gen[Double] = gap): Gen[(A, B)] =
-    for
-      p <- position
-      a <- first(p.x, p.y)
-      b <- second(0, 0)
-      u <- direction
-      g <- gaps
-    yield
-      placeAtGap(a, b, u, g)
-      (a, b)
