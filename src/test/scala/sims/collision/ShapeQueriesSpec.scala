@@ -58,6 +58,18 @@ class ShapeQueriesSpec extends AnyFunSuite with Matchers with ScalaCheckProperty
     }
   }
 
+  test("shapes far apart: a ray across them checks their bounds instead of walking billions of cells") {
+    val world = World()
+    for x <- Seq(-1e9, -3.0, 0.0, 4.0, 1e9) do
+      val ball = Circle(0.5, 1)
+      ball.pos = Vector2D(x, 0)
+      world += ball.asBody
+    val from = Vector2D(-2e9, 0.1)
+    val to = Vector2D(2e9, 0.1)
+    world.rayCastAll(from, to).map(_.shape.pos.x) shouldBe Seq(-1e9, -3.0, 0.0, 4.0, 1e9)
+    world.rayCast(Vector2D(-2, 0.1), to).map(_.shape.pos.x) shouldBe Some(0.0)
+  }
+
   test("queries see bodies where they are now: after a step, a move, a restore, a body joining or leaving") {
     val world = World()
     val ball = Circle(0.5, 1)

@@ -233,6 +233,13 @@ private[sims] final class UniformGrid extends Broadphase:
       // Exactly the cells between the two ends: rounding of the crossings cannot run away.
       var steps = math.abs(endX.toLong - cx) + math.abs(endY.toLong - cy)
       var walking = true
+      if steps > math.max(QueryCellLimit, count.toLong) then
+        // More cells than shapes (shapes far apart): every shape's bounds are checked, which is cheaper.
+        walking = false
+        var i = 0
+        while i < count do
+          if placement(i) == Fine then limit = offer(i, fromX, fromY, dx, dy, limit, visitor)
+          i += 1
       while walking do
         var entry = grid.firstEntry(cx, cy)
         while entry >= 0 do
@@ -324,7 +331,9 @@ private[sims] object UniformGrid:
   private val FineCellPerExtent = 1.5
   /** Shapes covering more fine cells than this are tested against all earlier shapes. */
   private val FineShapeCells = 64L
-  /** A query box covering more fine cells than this checks every shape's bounds instead. */
+  /** A query box covering more fine cells than this, or a ray crossing more than this and more
+    * than there are shapes, checks every shape's bounds instead.
+    */
   private val QueryCellLimit = 4096L
   private val Fine: Byte = 0
   private val Wide: Byte = 1
