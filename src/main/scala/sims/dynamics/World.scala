@@ -3,9 +3,8 @@ package sims.dynamics
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
 import sims.collision.{Collision, Contact, Detector, GridDetector, RayHit, ShapeQueries}
-import sims.geometry.AABB
 import sims.dynamics.joints.Joint
-import sims.geometry.Vector2D
+import sims.geometry.{AABB, Vector2D}
 import sims.solver.{CarriedState, ClassicStep, Solver}
 
 /** A world of bodies and joints, stepped in time by `step()` (documentation chapters 3 and 4).

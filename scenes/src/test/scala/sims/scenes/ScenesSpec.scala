@@ -67,16 +67,19 @@ class ScenesSpec extends AnyFunSuite:
       assert(notFinite(staged.world).isEmpty, scene.name)
       assert(staged.world.bodies.size >= bodies, scene.name)
 
-  /** Scenes also run under the soft step here (the others are the soft step's own tests' concern). */
-  private val SoftToo: Set[Scene] = Set(Queries, Filtering, Shapes)
+  /** Scenes whose region is checked under the soft step too; every scene runs under it without
+    * NaN, but whether the others keep their regions is the soft step's own tests' concern.
+    */
+  private val SoftRegions: Set[Scene] = Set(Queries, Filtering, Shapes)
 
   for
     scene <- Scenes.all
-    soft <- if SoftToo(scene) then Seq(false, true) else Seq(false)
+    soft <- Seq(false, true)
   do
     val seconds = SecondsOf.getOrElse(scene.name, Seconds)
     val under = if soft then " under the soft step" else ""
-    test(s"${scene.name} runs $seconds s$under without NaN, its bodies inside ${scene.region}"):
+    val inside = if soft && !SoftRegions(scene) then "" else s", its bodies inside ${scene.region}"
+    test(s"${scene.name} runs $seconds s$under without NaN$inside"):
       val staged = scene.build()
       val world = staged.world
       if soft then world.solver = sims.solver.SoftStep()
@@ -93,7 +96,8 @@ class ScenesSpec extends AnyFunSuite:
       val millis = (System.nanoTime() - start) / 1e6
       info(f"${scene.name}: $step steps, ${millis / step}%.3f ms/step")
       assert(firstNaN.isEmpty, s"${scene.name}: ${firstNaN.getOrElse("")}")
-      KnownEscapes.get(scene.name) match
+      if soft && !SoftRegions(scene) then info(s"region under the soft step, not checked here: ${firstEscape.getOrElse("kept")}")
+      else KnownEscapes.get(scene.name).filter(_ => !soft) match
         case Some(reason) =>
           info(s"known: $reason; first escape: ${firstEscape.getOrElse("none")}")
           pendingUntilFixed(assert(firstEscape.isEmpty))

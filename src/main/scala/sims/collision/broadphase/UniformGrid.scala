@@ -212,7 +212,7 @@ private[sims] final class UniformGrid extends Broadphase:
     while k < wide.length do { limit = offer(wide(k), fromX, fromY, dx, dy, limit, visitor); k += 1 }
     // Then the fine grid's cells along the ray, in order (a digital differential analyser),
     // over the part of the ray inside the box of the grid's shapes.
-    val enter = rayEntry(fineMinX, fineMinY, fineMaxX, fineMaxY, fromX, fromY, dx, dy, limit)
+    val enter = rayEntry(fineMinX, fineMinY, fineMaxX, fineMaxY, fromX, fromY, dx, dy)
     val leave = rayExit(fineMinX, fineMinY, fineMaxX, fineMaxY, fromX, fromY, dx, dy, limit)
     if enter <= leave then
       var cx = fineCell(fromX + enter * dx, perFine)
@@ -264,7 +264,7 @@ private[sims] final class UniformGrid extends Broadphase:
     if foundStamp(i) == queryStamp then limit
     else
       foundStamp(i) = queryStamp
-      val enter = rayEntry(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), fromX, fromY, dx, dy, limit)
+      val enter = rayEntry(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), fromX, fromY, dx, dy)
       val leave = rayExit(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), fromX, fromY, dx, dy, limit)
       if enter <= leave then visitor.visit(shapes(i), limit) else limit
 
@@ -344,11 +344,11 @@ private[sims] object UniformGrid:
   private inline def groupShape(key: Long): Int = Int.MaxValue - (key & 0xffffffffL).toInt
 
   /** The fraction at which the ray from (x, y) along (dx, dy) enters the box, at least 0; more
-    * than its `rayExit` when it misses the box before `limit` (slabs: the later of the two axes'
-    * entries, the earlier of their exits).
+    * than its `rayExit` when it misses the box before the exit's limit (slabs: the later of the
+    * two axes' entries, the earlier of their exits).
     */
   private def rayEntry(minX: Double, minY: Double, maxX: Double, maxY: Double, x: Double, y: Double, dx: Double,
-      dy: Double, limit: Double): Double =
+      dy: Double): Double =
     math.max(0.0, math.max(slabEntry(minX, maxX, x, dx), slabEntry(minY, maxY, y, dy)))
 
   /** The fraction at which the ray leaves the box, at most `limit` (see `rayEntry`). */
