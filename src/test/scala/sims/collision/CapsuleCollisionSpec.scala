@@ -68,6 +68,13 @@ class CapsuleCollisionSpec extends AnyFunSuite with Matchers with ScalaCheckProp
     Collision.overlapAlong(block, capsule(1, 0.25, 0, 1.1), 0, 1) shouldBe 0.1 +- 1e-12
   }
 
+  test("a pair without a capsule or an edge is not this collision's: the error names both classes") {
+    intercept[IllegalArgumentException](CapsuleCollision(circle(1, 0, 0), circle(1, 0, 1))).getMessage shouldBe
+      "no capsule contact for Circle and Circle"
+    intercept[IllegalArgumentException](CapsuleCollision(box(1, 1, 0, 0), box(1, 1, 0, 1))).getMessage should
+      include("Rectangle and Rectangle")
+  }
+
   test("the detector's direct path and the partial functions give the same collision") {
     val world = World()
     val ground = edge(-3, 0, 3, 0)

@@ -164,6 +164,22 @@ class ShapeQueriesSpec extends AnyFunSuite with Matchers with ScalaCheckProperty
     world.rayCast(Vector2D(4, 0.25), Vector2D(8, 0.25)).map(h => (h.shape, h.normal)) shouldBe Some((wedge, Vector2D(-1, 0)))
   }
 
+  test("a user's cast beyond the nearest hit so far is not taken; a world with another detector queries too") {
+    val world = World(w =>
+      new Detector:
+        def world = w
+        def collisions = IndexedSeq.empty
+        def detect(): Unit = ())
+    val ball = Circle(0.5, 1)
+    ball.pos = Vector2D(0, 2)
+    val plate = Plate()
+    plate.pos = Vector2D(0, -1)
+    world += ball.asBody
+    world += plate.asBody
+    world.rayCast(Vector2D(0, 5), Vector2D(0, -5)).map(_.shape) shouldBe Some(ball)
+    world.rayCastAll(Vector2D(0, 5), Vector2D(0, -5)).map(_.shape) shouldBe Seq(ball, plate)
+  }
+
   test("bad input fails naming the argument") {
     val world = World()
     def message(f: => Any): String = intercept[IllegalArgumentException](f).getMessage

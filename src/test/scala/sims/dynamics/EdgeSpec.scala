@@ -42,6 +42,10 @@ class EdgeSpec extends AnyFunSuite with Matchers:
     Body(Edge(Vector2D(0, 0), Vector2D(2, 0)), Edge(Vector2D(0, 2), Vector2D(2, 2))).pos shouldBe Vector2D(1, 1)
   }
 
+  test("printed with its ends") {
+    Edge(Vector2D(-1, 0), Vector2D(3, 0)).toString shouldBe "Edge(from (-1.0, 0.0) to (3.0, 0.0))"
+  }
+
   test("bad points are rejected naming the argument") {
     def message(f: => Any): String = intercept[IllegalArgumentException](f).getMessage
     message(Edge(Vector2D(1, 1), Vector2D(1, 1))) should include("end must differ from start, got (1.0, 1.0)")

@@ -64,6 +64,11 @@ class HullPolygonSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyC
     hull.contains(Vector2D(5.9, 5.9)) shouldBe true
   }
 
+  test("printed with its corners, density and place") {
+    HullPolygon(Seq(Vector2D(0, 0), Vector2D(2, 0), Vector2D(2, 2), Vector2D(0, 2)), 3).toString shouldBe
+      "HullPolygon(4 corners, density = 3.0, pos = (1.0, 1.0))"
+  }
+
   test("bad points fail, naming the argument and the value") {
     def message(f: => Any): String = intercept[IllegalArgumentException](f).getMessage
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 0)), 1)) should include("points must hold at least 3 distinct points, got 2")
