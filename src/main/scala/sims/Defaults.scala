@@ -31,6 +31,20 @@ object Defaults:
   /** Coefficient of friction of a new shape (a pair uses the product of its two shapes'). */
   val Friction: Double = 0.707
 
+  /** Collision categories of a new shape: the first of 32 (one bit each). */
+  val CategoryBits: Int = 1
+
+  /** Categories a new shape collides with: all of them. */
+  val MaskBits: Int = -1
+
+  /** Collision group of a new shape: none (groups decide before categories and masks). */
+  val GroupIndex: Int = 0
+
+  /** Whether the two bodies of a new joint collide with each other: yes, as in SiMS 1.2
+    * (Box2D's joints default to no).
+    */
+  val CollideConnected: Boolean = true
+
   // ---- Collision
 
   /** Side of a grid cell of the broadphase, m. */

@@ -1,6 +1,6 @@
 package sims.collision
 
-import sims.dynamics.{Constraint, Shape}
+import sims.dynamics.{Constraint, Edge, Shape}
 import sims.geometry.Vector2D
 
 /** A collision between two shapes: a constraint that keeps them from moving into each other
@@ -156,10 +156,15 @@ object Collision:
     val invMass = b1.invMass + cr1 * cr1 * b1.invI + b2.invMass + cr2 * cr2 * b2.invI
     if invMass == 0.0 then 0.0 else 1 / invMass
 
-  /** Overlap of the two shapes' projections onto the unit axis (nx, ny). */
+  /** Overlap of the two shapes' projections onto the unit axis (nx, ny), which points from s1
+    * towards s2. An edge has no inside, so its projection has no length and would overlap
+    * nothing: it counts as solid on its far side from the other shape (behind it along the
+    * axis as s1, beyond it as s2), so that the overlap is how far the other shape reaches
+    * through it.
+    */
   private[sims] def overlapAlong(s1: Shape, s2: Shape, nx: Double, ny: Double): Double =
-    val lower1 = s1.projectMin(nx, ny)
+    val lower1 = if s1.isInstanceOf[Edge] then Double.NegativeInfinity else s1.projectMin(nx, ny)
     val upper1 = s1.projectMax(nx, ny)
     val lower2 = s2.projectMin(nx, ny)
-    val upper2 = s2.projectMax(nx, ny)
+    val upper2 = if s2.isInstanceOf[Edge] then Double.PositiveInfinity else s2.projectMax(nx, ny)
     sims.geometry.Projection.overlap(lower1, upper1, lower2, upper2)

@@ -1,15 +1,34 @@
 package sims.collision
 
-import sims.dynamics.Shape
+import sims.dynamics.{Body, Shape}
 
-/** Which pairs of shapes may collide at all (SPEC section 4, broadphase): shapes of different
-  * bodies, not both fixed, both collidable, neither transient to the other. The broadphase
-  * applies it to every pair whose bounds overlap.
+/** Which pairs of shapes may collide at all (SPEC section 4, broadphase, with the filters of
+  * issue 15): shapes of different bodies, not both fixed, both collidable, accepted by their
+  * collision filters (`categoryBits`, `maskBits`, `groupIndex`), neither transient to the
+  * other, and their bodies not joined by a joint whose `collideConnected` is false. The
+  * broadphase applies it to every pair whose bounds overlap. Defaults accept every pair, as
+  * SiMS 1.2 did. (A pair rule for sensors belongs here too: one more test of the two shapes.)
   */
 private[sims] object PairFilter:
   /** True if `a` and `b` may collide (their bounds are checked by the caller). */
   def accepts(a: Shape, b: Shape): Boolean =
     (a.body ne b.body) && a.collidable && b.collidable &&
       !(a.body.fixed && b.body.fixed) &&
+      filtersAccept(a, b) &&
+      !jointSeparated(a.body, b.body) &&
       (a.transientShapes.isEmpty || !a.transientShapes.contains(b)) &&
       (b.transientShapes.isEmpty || !b.transientShapes.contains(a))
+
+  /** Box2D's filter rule: the same non-zero group decides (positive: always, negative: never);
+    * otherwise each shape's mask must share a bit with the other's categories.
+    */
+  def filtersAccept(a: Shape, b: Shape): Boolean =
+    if a.groupIndex == b.groupIndex && a.groupIndex != 0 then a.groupIndex > 0
+    else (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0
+
+  /** True if a joint in their world keeps the two bodies from colliding. The world keeps the
+    * list on each body (usually empty), so this costs nothing for bodies without such joints.
+    */
+  def jointSeparated(a: Body, b: Body): Boolean =
+    val partners = a.jointPartners
+    (partners ne Nil) && partners.contains(b)

@@ -58,7 +58,25 @@ final class Body(initialShapes: Shape*):
   /** The world this body is in, or null. */
   private[sims] var world: World = null
 
+  /** The bodies this one must not collide with: the other body of each joint in its world
+    * whose `collideConnected` is false, once per such joint (kept by the joints as they join
+    * and leave the world, so the pair filter reads a short list instead of every joint).
+    */
+  private[sims] var jointPartners: List[Body] = Nil
+
+  /** Adds one entry for `other` to the bodies this one must not collide with. */
+  private[sims] def addJointPartner(other: Body): Unit = jointPartners = other :: jointPartners
+
+  /** Removes one entry for `other` (another joint between the two may keep them apart). */
+  private[sims] def removeJointPartner(other: Body): Unit =
+    val i = jointPartners.indexWhere(_ eq other)
+    if i >= 0 then jointPartners = jointPartners.patch(i, Nil, 1)
+
+  // An edge has no mass: it may only be part of a fixed body (see Edge).
+  private val hasEdge = shapes.exists(_.isInstanceOf[Edge])
+
   shapesChanged()
+  if hasEdge then fixed = true
 
   /** Recomputes mass, centre of mass, inertia and the shapes' offsets from their positions. */
   private[sims] def shapesChanged(): Unit =
@@ -68,11 +86,14 @@ final class Body(initialShapes: Shape*):
       m += s.mass
       sx += s.x * s.mass
       sy += s.y * s.mass
+    // Only edges have no mass: a body made of edges alone (always fixed) takes the middle of
+    // their centres for its centre and skips the checks, which its zero mass would fail.
+    val massless = m == 0 && hasEdge && shapes.forall(_.isInstanceOf[Edge])
     // Checked before anything changes: a user's shape may have any mass, and sums and
     // moments of finite shapes can still overflow.
-    Shape.requireDerived(describe, "mass", m)
-    val centreX = sx / m
-    val centreY = sy / m
+    if !massless then Shape.requireDerived(describe, "mass", m)
+    val centreX = if massless then shapes.map(_.x).sum / shapes.length else sx / m
+    val centreY = if massless then shapes.map(_.y).sum / shapes.length else sy / m
     if !java.lang.Double.isFinite(centreX) || !java.lang.Double.isFinite(centreY) then
       throw IllegalArgumentException(s"$describe: its centre of mass would be ($centreX, $centreY), not finite")
     var inertia = 0.0
@@ -80,7 +101,7 @@ final class Body(initialShapes: Shape*):
       val dx = s.x - centreX
       val dy = s.y - centreY
       inertia += s.I + s.mass * (dx * dx + dy * dy)
-    Shape.requireDerived(describe, "moment of inertia", inertia)
+    if !massless then Shape.requireDerived(describe, "moment of inertia", inertia)
     x = centreX
     y = centreY
     extent = 0
@@ -180,6 +201,7 @@ final class Body(initialShapes: Shape*):
     Vector2D.requireFinite("pos", newPos)
     x = newPos.x; y = newPos.y
     placeShapes()
+    if world != null then world.shapesMoved()
 
   /** Rotation in radians, counter-clockwise; 0 when the body was made. */
   def rotation: Double = angle
@@ -188,6 +210,7 @@ final class Body(initialShapes: Shape*):
   def rotation_=(newRotation: Double): Unit =
     angle = Vector2D.requireFinite("rotation", newRotation)
     placeShapes()
+    if world != null then world.shapesMoved()
 
   /** Mass in kg: the shapes' sum, or positive infinity when fixed. */
   def mass: Double = if _fixed then Double.PositiveInfinity else freeMass
@@ -198,8 +221,12 @@ final class Body(initialShapes: Shape*):
   /** Whether the body is fixed (immovable by forces and impulses). */
   def fixed: Boolean = _fixed
 
-  /** Fixes or frees the body; fixing it also sets both velocities to 0. */
+  /** Fixes or frees the body; fixing it also sets both velocities to 0. A body with an
+    * [[Edge]] cannot be freed.
+    */
   def fixed_=(value: Boolean): Unit =
+    if !value && hasEdge then
+      throw IllegalArgumentException(s"fixed must stay true for a body with an Edge (edges have no mass), got false")
     placements += 1 // the inverse masses change: cached effective masses must be recomputed
     _fixed = value
     if value then

@@ -28,6 +28,10 @@ final class Circle(val radius: Double, val density: Double) extends Shape:
     val dy = point.y - y
     dx * dx + dy * dy <= radius * radius
 
+  override private[sims] def castRay(x1: Double, y1: Double, dx: Double, dy: Double, maxFraction: Double,
+      hit: sims.geometry.RayMath.Hit): Boolean =
+    sims.geometry.RayMath.circle(x, y, radius, x1, y1, dx, dy, maxFraction, hit)
+
   override private[sims] def boundingRadius: Double = radius
   override private[sims] def projectMin(ax: Double, ay: Double): Double = x * ax + y * ay - radius
   override private[sims] def projectMax(ax: Double, ay: Double): Double = x * ax + y * ay + radius

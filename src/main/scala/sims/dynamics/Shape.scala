@@ -1,6 +1,7 @@
 package sims.dynamics
 
-import sims.geometry.{AABB, Projection, Vector2D}
+import sims.collision.RayHit
+import sims.geometry.{AABB, ConvexPolygon, Projection, RayMath, Vector2D}
 
 /** A rigid two-dimensional form with a material (density, restitution, friction). Bodies are
   * made of shapes; a shape belongs to at most one body. Subclasses give the geometry:
@@ -72,6 +73,23 @@ abstract class Shape:
   /** Shapes this one never collides with (checked in both directions). */
   var transientShapes: Set[Shape] = Set.empty
 
+  // Collision filtering (Box2D's rule, see sims.collision.PairFilter). Every Int is a valid
+  // value of each, so there is nothing to check.
+
+  /** The collision categories this shape belongs to, one bit each (default 1: the first). */
+  var categoryBits: Int = sims.Defaults.CategoryBits
+
+  /** The categories this shape collides with, one bit each (default -1: all). Two shapes
+    * collide only if each one's mask has a bit of the other's categories (unless a group
+    * decides).
+    */
+  var maskBits: Int = sims.Defaults.MaskBits
+
+  /** The collision group (default 0: none). Two shapes of the same positive group always
+    * collide, two of the same negative group never; otherwise categories and masks decide.
+    */
+  var groupIndex: Int = sims.Defaults.GroupIndex
+
   private[sims] var _body: Body = null
 
   /** The body this shape belongs to, or null before it is part of one. */
@@ -96,6 +114,36 @@ abstract class Shape:
 
   /** True if `point` (world coordinates) lies inside or on the shape. */
   def contains(point: Vector2D): Boolean
+
+  /** Where the straight path from `from` to `to` (world coordinates) first enters this shape,
+    * or None if it misses the shape or starts inside it. Circles, polygons (any shape that mixes
+    * in `ConvexPolygon`), capsules and edges are cast exactly. Any other shape is missed, unless
+    * its class overrides this method: `World.rayCast` then asks it too.
+    */
+  def rayCast(from: Vector2D, to: Vector2D): Option[RayHit] =
+    Vector2D.requireFinite("from", from)
+    Vector2D.requireFinite("to", to)
+    val hit = RayMath.Hit()
+    val dx = to.x - from.x
+    val dy = to.y - from.y
+    if castRay(from.x, from.y, dx, dy, 1, hit) then
+      Some(RayHit(this, Vector2D(from.x + hit.fraction * dx, from.y + hit.fraction * dy),
+        Vector2D(hit.normalX, hit.normalY), hit.fraction))
+    else None
+
+  /** The library's allocation-free ray cast (see [[sims.geometry.RayMath]]): fills `hit` and is
+    * true when the ray from (x1, y1) along (dx, dy) enters the shape at a fraction at most
+    * `maxFraction`. By default the sides of a `ConvexPolygon`, else a miss; the library's other
+    * shapes override it.
+    */
+  private[sims] def castRay(x1: Double, y1: Double, dx: Double, dy: Double, maxFraction: Double,
+      hit: RayMath.Hit): Boolean =
+    this match
+      case polygon: ConvexPolygon =>
+        val xs = polygon.vertexXs
+        RayMath.polygon(xs, polygon.vertexYs, polygon.sideNormalXs, polygon.sideNormalYs, xs.length, x1, y1, dx, dy,
+          maxFraction, hit)
+      case _ => false
 
   /** A new body made of this shape alone. */
   def asBody: Body = Body(this)
@@ -145,6 +193,14 @@ abstract class Shape:
 
 /** Checks shared by all shapes. */
 object Shape:
+  // Per shape class: whether it overrides `rayCast` (a user's own cast), found once.
+  private val castsItself = new ClassValue[java.lang.Boolean]:
+    protected def computeValue(shapeClass: Class[?]): java.lang.Boolean =
+      shapeClass.getMethod("rayCast", classOf[Vector2D], classOf[Vector2D]).getDeclaringClass != classOf[Shape]
+
+  /** True if `shape`'s class overrides `rayCast`, which ray casts must then call. */
+  private[sims] def castsItself(shape: Shape): Boolean = castsItself.get(shape.getClass).booleanValue
+
   /** Fails unless `value` is finite and strictly positive. */
   private[sims] def requirePositive(name: String, value: Double): Double =
     if !(value > 0) || value.isInfinite then

@@ -2,9 +2,9 @@ package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
-import sims.collision.{Collision, Contact, Detector, GridDetector}
+import sims.collision.{Collision, Contact, Detector, GridDetector, RayHit, ShapeQueries}
 import sims.dynamics.joints.{Joint, SpringJoint}
-import sims.geometry.Vector2D
+import sims.geometry.{AABB, Vector2D}
 import sims.solver.{CarriedState, ClassicStep, Solver}
 
 /** A world of bodies and joints, stepped in time by `step()` (documentation chapters 3 and 4).
@@ -39,6 +39,9 @@ class World(makeDetector: World => Detector = GridDetector(_)):
 
   /** The collision detector used by `step()`. */
   val detector: Detector = makeDetector(this)
+
+  // The queries' own broadphase, brought up to date at the first query after a change.
+  private val queries = ShapeQueries(this)
 
   /** Whether collisions are detected and corrected. */
   var enableCollisionDetection: Boolean = true
@@ -109,6 +112,44 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     */
   def contacts: IndexedSeq[Contact] = _solver.contacts(this)
 
+  /** The nearest shape that the straight path from `from` to `to` enters, among those `filter`
+    * accepts (all by default), with where and at what fraction of the way; None if it enters
+    * none. Shapes it starts inside are not hit; a user's shape kind is hit only if its class
+    * overrides `Shape.rayCast`. Looks at the shapes near the path only (through a grid).
+    */
+  def rayCast(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape): Option[RayHit] =
+    queries.rayCast(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to), requireFilter(filter))
+
+  /** Every shape the path from `from` to `to` enters, as `rayCast` finds them, nearest first
+    * (shapes hit at the same fraction in the order they joined the world).
+    */
+  def rayCastAll(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape): IndexedSeq[RayHit] =
+    queries.rayCastAll(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to), requireFilter(filter))
+
+  /** The shapes whose bounding boxes overlap (or touch) `box`, among those `filter` accepts, in
+    * the order they joined the world. Looks at the shapes near the box only.
+    */
+  def query(box: AABB, filter: Shape => Boolean = World.AnyShape): IndexedSeq[Shape] =
+    if box == null then throw IllegalArgumentException("box must not be null")
+    Vector2D.requireFinite("box.minVertex", box.minVertex)
+    Vector2D.requireFinite("box.maxVertex", box.maxVertex)
+    if box.minVertex.x > box.maxVertex.x || box.minVertex.y > box.maxVertex.y then
+      throw IllegalArgumentException(s"box must have its minVertex below and left of its maxVertex, got $box")
+    queries.query(box.minVertex.x, box.minVertex.y, box.maxVertex.x, box.maxVertex.y, requireFilter(filter))
+
+  /** The shapes that contain `point` (world coordinates), among those `filter` accepts, in the
+    * order they joined the world (the viewer picks the last free one).
+    */
+  def shapesAt(point: Vector2D, filter: Shape => Boolean = World.AnyShape): IndexedSeq[Shape] =
+    queries.shapesAt(Vector2D.requireFinite("point", point), requireFilter(filter))
+
+  private def requireFilter(filter: Shape => Boolean): Shape => Boolean =
+    if filter == null then throw IllegalArgumentException("filter must not be null")
+    filter
+
+  /** Tells the queries that shapes moved, joined or left: they take the bounds again when next asked. */
+  private[sims] def shapesMoved(): Unit = queries.stale = true
+
   /** Adds a body; fails if it is already in this or another world. */
   def +=(body: Body): this.type =
     if body == null then throw IllegalArgumentException("body must not be null")
@@ -122,18 +163,22 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       nextShapeIndex += 1
     shapeList ++= body.shapes
     shapesChanged = true
+    shapesMoved()
     this
 
-  /** Adds a joint; fails if it is already in this world. Its bodies must be in the world
-    * by the next step.
+  /** Adds a joint; fails if it is already in this or another world. Its bodies must be in
+    * the world by the next step.
     */
   def +=(joint: Joint): this.type =
     if joint == null then throw IllegalArgumentException("joint must not be null")
     if jointBuffer.exists(_ eq joint) then throw IllegalArgumentException(s"joint $joint is already in this world")
+    if joint.world != null then throw IllegalArgumentException(s"joint $joint is already in another world")
     joint match
       case spring: SpringJoint => checkStability(spring, IllegalArgumentException(_))
       case _ => ()
     jointBuffer += joint
+    joint.world = this
+    if !joint.collideConnected then joint.keepApart(true)
     this
 
   /** Removes a body (joints on it must be removed too before the next step). */
@@ -148,12 +193,16 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       for j <- i until bodyBuffer.length do bodyBuffer(j).index = j
       shapeList.filterInPlace(_.body ne body)
       shapesChanged = true
+      shapesMoved()
     this
 
   /** Removes a joint. */
   def -=(joint: Joint): this.type =
     val i = jointBuffer.indexWhere(_ eq joint)
-    if i >= 0 then jointBuffer.remove(i)
+    if i >= 0 then
+      jointBuffer.remove(i)
+      joint.world = null
+      if !joint.collideConnected then joint.keepApart(false)
     this
 
   /** Run after each step (phase 7); override it to observe or steer the simulation. */
@@ -175,12 +224,15 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     checkJoints()
     beforeStep.save(this, withSolvers = false)
     startSolverStep()
+    shapesMoved()
     stage = World.StartStage
     try
       _solver.step(this)
+      shapesMoved() // also after: a query made during the step (by a joint, say) saw other positions
       stage = World.PostStepStage
       postStep()
     catch case error: Throwable => failStep(error)
+    shapesMoved() // the hook may have moved bodies after a query of its own
     stage = World.NoStage
 
   /** The stage of the step under way, set by the solver as each stage begins (a constant
@@ -197,6 +249,7 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     stage = World.NoStage
     try undoStep()
     catch case undoError: Throwable => error.addSuppressed(undoError)
+    shapesMoved()
     if guardFailed then
       guardFailed = false
       throw error
@@ -212,7 +265,9 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     state
 
   /** Puts the world back into a state taken by `snapshot()`; the bodies must be the same. */
-  def restore(state: WorldState): Unit = state.load(this)
+  def restore(state: WorldState): Unit =
+    state.load(this)
+    shapesMoved()
 
   private[sims] def time_=(t: Double): Unit = _time = t
 
@@ -317,8 +372,11 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
   private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
 
-/** The world's own stage names and the helpers of `World.step`'s errors. */
+/** The world's own stage names, the helpers of `World.step`'s errors and the queries' defaults. */
 object World:
+  /** The queries' default filter: every shape. */
+  val AnyShape: Shape => Boolean = _ => true
+
   /** No step under way. */
   private[sims] val NoStage = "none"
   /** The step has begun, its solver has not named a stage yet. */

@@ -20,33 +20,8 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
       if a.AABB.overlaps(b.AABB) && PairFilter.accepts(a, b)
     yield (a, b)
 
-  private val shape: Gen[Shape] =
-    for
-      size <- Gen.oneOf(Gen.choose(0.01, 0.3), Gen.choose(0.3, 3.0), Gen.choose(3.0, 30.0))
-      kind <- Gen.choose(0, 2)
-      x <- Gen.choose(-20.0, 20.0)
-      y <- Gen.choose(-20.0, 20.0)
-      rotation <- Gen.choose(0.0, 3.0)
-    yield
-      val s = kind match
-        case 0 => Circle(size, 1)
-        case 1 => Rectangle(size, size / 2, 1)
-        case _ => RegularPolygon(5, size, 1)
-      s.pos = Vector2D(x, y)
-      s.rotation = rotation
-      s
-
-  private def scene(shapes: Seq[Shape], gridSide: Double): World =
-    val world = World()
-    world.detector.asInstanceOf[GridDetector].gridSide = gridSide
-    // One huge ground box, and some bodies of two shapes.
-    val ground = Rectangle(200, 5, 1)
-    ground.pos = Vector2D(0, -10)
-    world += ground.asBody
-    shapes.grouped(2).zipWithIndex.foreach { (group, i) =>
-      if i % 3 == 0 then world += Body(group*) else group.foreach(s => world += s.asBody)
-    }
-    world
+  private val shape: Gen[Shape] = RandomScenes.shape(kinds = 3)
+  private def scene(shapes: Seq[Shape], gridSide: Double): World = RandomScenes.scene(shapes, gridSide)
 
   test("grid pairs equal brute-force pairs, in order, each once") {
     forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0, 7.0), minSuccessful(40)) { (shapes, side) =>
@@ -117,6 +92,29 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
         grid.query(query.minVertex.x, query.minVertex.y, query.maxVertex.x, query.maxVertex.y, found)
         found.toSeq shouldBe world.shapes.filter(s => s.collidable && s.AABB.overlaps(query))
     }
+  }
+
+  test("a ray is offered only the shapes near it, each once, and the walk stops at the limit") {
+    val world = World()
+    for i <- 0 until 100; j <- 0 until 100 do
+      val c = Circle(0.1, 1)
+      c.pos = Vector2D(i * 0.3, j * 0.3)
+      world += c.asBody
+    val grid = sims.collision.broadphase.UniformGrid()
+    grid.update(world.shapeBuffer, 0)
+    val offered = scala.collection.mutable.ArrayBuffer.empty[Shape]
+    def walk(fromX: Double, fromY: Double, toX: Double, toY: Double, stopAt: Double): Unit =
+      offered.clear()
+      grid.rayCast(fromX, fromY, toX, toY, new sims.collision.broadphase.Broadphase.RayVisitor:
+        def visit(shape: Shape, limit: Double): Double = { offered += shape; math.min(limit, stopAt) })
+    // Along the row y = 0.3 across the whole grid: its 100 balls and none of the other 9,900 far from it.
+    walk(-1, 0.3, 31, 0.3, 1)
+    offered.size shouldBe offered.distinct.size
+    offered.count(s => math.abs(s.pos.y - 0.3) < 1e-9) shouldBe 100
+    offered.forall(s => math.abs(s.pos.y - 0.3) < 0.31) shouldBe true
+    // A visitor that wants nothing beyond a tenth of the ray stops the walk there.
+    walk(-1, 0.3, 31, 0.3, 0.1)
+    offered.map(_.pos.x).max should be < 3.3
   }
 
   test("bounds enlarged by a margin make pairs of shapes that are that close") {

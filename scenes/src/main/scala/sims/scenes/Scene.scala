@@ -25,8 +25,10 @@ final case class Region(minX: Double, minY: Double, maxX: Double, maxY: Double):
 /** Something a scene can do on request while it runs, e.g. fire the cannon. */
 final case class SceneAction(label: String, run: () => Unit)
 
-/** A scene built and ready to step: its world and its optional action. */
-final case class Staged(world: World, action: Option[SceneAction] = None)
+/** A scene built and ready to step: its world, its optional action, and what to draw over its
+  * bodies as it is now (`overlay()`, asked for every picture).
+  */
+final case class Staged(world: World, action: Option[SceneAction] = None, overlay: () => Overlay = () => Overlay.empty)
 
 /** A scene: a recipe for a fresh world, with the view a camera should show and the region its
   * bodies are expected to stay in (checked by the tests). The examples, the benchmarks and the

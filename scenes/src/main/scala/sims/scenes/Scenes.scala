@@ -5,7 +5,8 @@ object Scenes:
   /** Every scene, in the order the viewer and the listing show them. */
   val all: IndexedSeq[Scene] = IndexedSeq(
     BallStack, Chain, Stacking, Restitution, Friction, Spring, NetScene, Cup, Carriage, Wave,
-    Atom, Cannon, PylonScene, RagdollScene, CompositeShape, Pyramid, Pile, NewtonsCradle, Dominoes)
+    Atom, Cannon, PylonScene, RagdollScene, CompositeShape, Pyramid, Pile, NewtonsCradle, Dominoes, Queries, Filtering,
+    Shapes)
 
   /** The scene run when none is named. */
   val default: Scene = BallStack

@@ -10,9 +10,9 @@ import sims.dynamics.Shape
   */
 private[sims] trait Broadphase:
   /** Takes the current bounds of `shapes` (world order), each enlarged by `margin` on every
-    * side; shapes that are not collidable are left out.
+    * side; shapes that are not collidable are left out, unless `everyShape` (for queries).
     */
-  def update(shapes: Array[Shape], margin: Double): Unit
+  def update(shapes: Array[Shape], margin: Double, everyShape: Boolean = false): Unit
 
   /** Adds every candidate pair of the last `update` to `pairs` once (see [[sims.collision.PairFilter]]),
     * the shape that joined the world first being the pair's first shape.
@@ -23,3 +23,20 @@ private[sims] trait Broadphase:
     * overlap the box from (minX, minY) to (maxX, maxY).
     */
   def query(minX: Double, minY: Double, maxX: Double, maxY: Double, found: ArrayBuffer[Shape]): Unit
+
+  /** Offers `visitor` every shape of the last `update` whose enlarged bounds the segment from
+    * (fromX, fromY) to (toX, toY) crosses, each once, nearer ones first as far as the grid's
+    * cells tell, until no shape can be crossed before the fraction of the segment that the
+    * visitor returned last (see [[Broadphase.RayVisitor]]).
+    */
+  def rayCast(fromX: Double, fromY: Double, toX: Double, toY: Double, visitor: Broadphase.RayVisitor): Unit
+
+/** Types of the broadphase's queries. */
+private[sims] object Broadphase:
+  /** Receives the shapes along a ray: `visit` is called with a shape and the fraction of the ray
+    * beyond which nothing is wanted any more (1 at first), and returns the new such fraction
+    * (the fraction of a hit, to find the nearest; the same one, to find all).
+    */
+  abstract class RayVisitor:
+    /** Looks at `shape`, whose bounds the ray crosses before `limit`; returns the new limit. */
+    def visit(shape: Shape, limit: Double): Double

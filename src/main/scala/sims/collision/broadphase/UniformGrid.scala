@@ -63,14 +63,17 @@ private[sims] final class UniformGrid extends Broadphase:
   private var foundStamp = new Array[Int](0)
   private var queryStamp = 0
   private val foundIndices = ArrayBuffer.empty[Int]
+  // The box around the bounds of the shapes in the fine grid: a ray's walk is clipped to it.
+  private var fineMinX, fineMinY, fineMaxX, fineMaxY = 0.0
 
-  def update(shapes: Array[Shape], margin: Double): Unit = update(shapes, margin, 0)
+  def update(shapes: Array[Shape], margin: Double): Unit = update(shapes, margin, 0, everyShape = false)
 
   /** `update`, each shape's bounds also enlarged by how far its body's points can move in
     * `sweep` seconds at their current speed (|v| + |w| extent): a solver that makes contacts
     * before shapes touch (the soft step) then finds the pairs that can meet within the step.
+    * With `everyShape`, shapes that are not collidable are taken too (for queries).
     */
-  def update(shapes: Array[Shape], margin: Double, sweep: Double): Unit =
+  def update(shapes: Array[Shape], margin: Double, sweep: Double, everyShape: Boolean): Unit =
     this.shapes = shapes
     count = shapes.length
     ensureCapacity(count)
@@ -85,7 +88,7 @@ private[sims] final class UniformGrid extends Broadphase:
     var i = 0
     while i < count do
       val s = shapes(i)
-      if !s.collidable then placement(i) = Ignored
+      if !s.collidable && !everyShape then placement(i) = Ignored
       else
         val reach =
           if sweep == 0 then margin
@@ -115,6 +118,8 @@ private[sims] final class UniformGrid extends Broadphase:
       if mean > 0 && mean <= side then mean else side
     // Fine cells by multiplication: any consistent cell function serves the internal grid.
     perFine = 1 / fine
+    fineMinX = Double.PositiveInfinity; fineMinY = Double.PositiveInfinity
+    fineMaxX = Double.NegativeInfinity; fineMaxY = Double.NegativeInfinity
     i = 0
     while i < count do
       if placement(i) == Fine then
@@ -123,6 +128,9 @@ private[sims] final class UniformGrid extends Broadphase:
         if cellCount(fineX0(i), fineX1(i), fineY0(i), fineY1(i)) > FineShapeCells then
           placement(i) = Wide
           wide += i
+        else
+          fineMinX = math.min(fineMinX, boxMinX(i)); fineMinY = math.min(fineMinY, boxMinY(i))
+          fineMaxX = math.max(fineMaxX, boxMaxX(i)); fineMaxY = math.max(fineMaxY, boxMaxY(i))
       i += 1
     gridBuilt = false
 
@@ -226,6 +234,76 @@ private[sims] final class UniformGrid extends Broadphase:
       found += shapes(foundIndices(k))
       k += 1
 
+  def rayCast(fromX: Double, fromY: Double, toX: Double, toY: Double, visitor: Broadphase.RayVisitor): Unit =
+    if !gridBuilt then buildGrid()
+    queryStamp += 1
+    val dx = toX - fromX
+    val dy = toY - fromY
+    var limit = 1.0
+    // Shapes outside the fine grid first, each once: a ground among them limits the walk.
+    var k = 0
+    while k < large.length do { limit = offer(large(k), fromX, fromY, dx, dy, limit, visitor); k += 1 }
+    k = 0
+    while k < wide.length do { limit = offer(wide(k), fromX, fromY, dx, dy, limit, visitor); k += 1 }
+    // Then the fine grid's cells along the ray, in order (a digital differential analyser),
+    // over the part of the ray inside the box of the grid's shapes.
+    val enter = rayEntry(fineMinX, fineMinY, fineMaxX, fineMaxY, fromX, fromY, dx, dy)
+    val leave = rayExit(fineMinX, fineMinY, fineMaxX, fineMaxY, fromX, fromY, dx, dy, limit)
+    if enter <= leave then
+      var cx = fineCell(fromX + enter * dx - originX, perFine)
+      var cy = fineCell(fromY + enter * dy - originY, perFine)
+      val endX = fineCell(fromX + leave * dx - originX, perFine)
+      val endY = fineCell(fromY + leave * dy - originY, perFine)
+      val stepX = if endX > cx then 1 else -1
+      val stepY = if endY > cy then 1 else -1
+      val cellSide = 1 / perFine
+      // Fractions of the ray at its next crossings of a vertical and a horizontal cell border,
+      // and between two such crossings.
+      // (Fine cells count from the grid's origin.)
+      var nextX = if dx > 0 then (originX + (cx + 1L) * cellSide - fromX) / dx
+        else if dx < 0 then (originX + cx * cellSide - fromX) / dx else Double.PositiveInfinity
+      var nextY = if dy > 0 then (originY + (cy + 1L) * cellSide - fromY) / dy
+        else if dy < 0 then (originY + cy * cellSide - fromY) / dy else Double.PositiveInfinity
+      val deltaX = if dx != 0 then cellSide / math.abs(dx) else Double.PositiveInfinity
+      val deltaY = if dy != 0 then cellSide / math.abs(dy) else Double.PositiveInfinity
+      // Exactly the cells between the two ends: rounding of the crossings cannot run away.
+      var steps = math.abs(endX.toLong - cx) + math.abs(endY.toLong - cy)
+      var walking = true
+      if steps > math.max(QueryCellLimit, count.toDouble) then
+        // More cells than shapes (shapes far apart): every shape's bounds are checked, which is cheaper.
+        walking = false
+        var i = 0
+        while i < count do
+          if placement(i) == Fine then limit = offer(i, fromX, fromY, dx, dy, limit, visitor)
+          i += 1
+      while walking do
+        var entry = grid.firstEntry(cx, cy)
+        while entry >= 0 do
+          limit = offer(grid.shapeOf(entry), fromX, fromY, dx, dy, limit, visitor)
+          entry = grid.nextEntry(entry)
+        // Shapes crossed before `limit` lie in the cells before it, all walked by now.
+        if steps == 0 || math.min(nextX, nextY) > limit then walking = false
+        else
+          if nextX < nextY && cx != endX || cy == endY then
+            cx += stepX
+            nextX += deltaX
+          else
+            cy += stepY
+            nextY += deltaY
+          steps -= 1
+
+  /** Offers shape i to the visitor once per query, if the ray crosses its bounds before
+    * `limit`; returns the visitor's new limit (or the old one).
+    */
+  private def offer(i: Int, fromX: Double, fromY: Double, dx: Double, dy: Double, limit: Double,
+      visitor: Broadphase.RayVisitor): Double =
+    if foundStamp(i) == queryStamp then limit
+    else
+      foundStamp(i) = queryStamp
+      val enter = rayEntry(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), fromX, fromY, dx, dy)
+      val leave = rayExit(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), fromX, fromY, dx, dy, limit)
+      if enter <= leave then visitor.visit(shapes(i), limit) else limit
+
   /** Adds shape i to the query's result once, if its bounds overlap the box. */
   private def consider(i: Int, minX: Double, minY: Double, maxX: Double, maxY: Double): Unit =
     if foundStamp(i) != queryStamp &&
@@ -300,7 +378,9 @@ private[sims] object UniformGrid:
   private val FineCellPerExtent = 1.5
   /** Shapes covering more fine cells than this are tested against all earlier shapes. */
   private val FineShapeCells = 64.0
-  /** A query box covering more fine cells than this checks every shape's bounds instead. */
+  /** A query box covering more fine cells than this, or a ray crossing more than this and more
+    * than there are shapes, checks every shape's bounds instead.
+    */
   private val QueryCellLimit = 4096.0
   private val Fine: Byte = 0
   private val Wide: Byte = 1
@@ -316,6 +396,31 @@ private[sims] object UniformGrid:
 
   /** The shape index in a group key. */
   private inline def groupShape(key: Long): Int = Int.MaxValue - (key & 0xffffffffL).toInt
+
+  /** The fraction at which the ray from (x, y) along (dx, dy) enters the box, at least 0; more
+    * than its `rayExit` when it misses the box before the exit's limit (slabs: the later of the
+    * two axes' entries, the earlier of their exits).
+    */
+  private def rayEntry(minX: Double, minY: Double, maxX: Double, maxY: Double, x: Double, y: Double, dx: Double,
+      dy: Double): Double =
+    math.max(0.0, math.max(slabEntry(minX, maxX, x, dx), slabEntry(minY, maxY, y, dy)))
+
+  /** The fraction at which the ray leaves the box, at most `limit` (see `rayEntry`). */
+  private def rayExit(minX: Double, minY: Double, maxX: Double, maxY: Double, x: Double, y: Double, dx: Double,
+      dy: Double, limit: Double): Double =
+    math.min(limit, math.min(slabExit(minX, maxX, x, dx), slabExit(minY, maxY, y, dy)))
+
+  /** Where the line p + t d enters the slab [min, max] of one axis (-infinity if it starts in it
+    * and runs along it, +infinity if it runs along it outside).
+    */
+  private inline def slabEntry(min: Double, max: Double, p: Double, d: Double): Double =
+    if d > 0 then (min - p) / d else if d < 0 then (max - p) / d
+    else if p >= min && p <= max then Double.NegativeInfinity else Double.PositiveInfinity
+
+  /** Where the line leaves the slab (see `slabEntry`). */
+  private inline def slabExit(min: Double, max: Double, p: Double, d: Double): Double =
+    if d > 0 then (max - p) / d else if d < 0 then (min - p) / d
+    else if p >= min && p <= max then Double.PositiveInfinity else Double.NegativeInfinity
 
   /** Grid cell index of a coordinate: floor(coordinate / side) (clamped to the Long range). */
   private[sims] def cell(coordinate: Double, side: Double): Long = math.floor(coordinate / side).toLong

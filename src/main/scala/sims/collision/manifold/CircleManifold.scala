@@ -15,15 +15,22 @@ private[sims] object CircleManifold:
     * `d - rA - rB` is at most `speculativeDistance`, else no point.
     */
   def collide(circleA: Circle, circleB: Circle, speculativeDistance: Double, manifold: Manifold): Unit =
+    discs(circleA.x, circleA.y, circleA.radius, circleB.x, circleB.y, circleB.radius, speculativeDistance, manifold)
+
+  /** `collide` for discs of centres (aX, aY), (bX, bY) and radii: also the capsule-circle case,
+    * whose capsule acts as a disc centred on its core's point nearest the circle.
+    */
+  private[manifold] def discs(aX: Double, aY: Double, radiusA: Double, bX: Double, bY: Double, radiusB: Double,
+      speculativeDistance: Double, manifold: Manifold): Unit =
     manifold.clear()
-    val dx = circleB.x - circleA.x
-    val dy = circleB.y - circleA.y
+    val dx = bX - aX
+    val dy = bY - aY
     val distance = math.sqrt(dx * dx + dy * dy)
-    val separation = distance - circleA.radius - circleB.radius
+    val separation = distance - radiusA - radiusB
     if separation <= speculativeDistance then
       val normalX = if distance == 0 then 0.0 else dx / distance
       val normalY = if distance == 0 then 1.0 else dy / distance
-      val reach = circleA.radius + 0.5 * separation // from A's centre to the point
+      val reach = radiusA + 0.5 * separation // from A's centre to the point
       manifold.normalX = normalX
       manifold.normalY = normalY
-      manifold.addPoint(circleA.x + normalX * reach, circleA.y + normalY * reach, separation, 0)
+      manifold.addPoint(aX + normalX * reach, aY + normalY * reach, separation, 0)

@@ -1,6 +1,6 @@
 package sims.collision.manifold
 
-import sims.dynamics.Shape
+import sims.dynamics.{RoundedSegment, Shape}
 import sims.geometry.ConvexPolygon
 
 // Polygon-polygon manifold by the separating axis test and clipping.
@@ -32,9 +32,22 @@ import sims.geometry.ConvexPolygon
 // when d . e < 0 and d . f > 0 (the squared distance of two segments is convex in their
 // parameters, so this local minimum is the minimum).
 //
+// Rounded polygons. A capsule or an edge is a polygon of two vertices (its core's ends) and two
+// sides (the core, with its two opposite normals) grown by a radius r: each point within r of
+// it. Separations along a side normal and between corners then shrink by the radii of the two
+// shapes, and a point lies midway between the grown surfaces: for a clipped incident point q
+// of core separation c from the reference side, the surfaces lie at rReference and
+// c - rIncident along n, and the point at q - n (c + rIncident - rReference) / 2. Plain
+// polygons have radius 0 and the same arithmetic as before. The separating axes of two
+// convex polygons are their side normals; a polygon and a core segment need no more, so this
+// serves a polygon against a capsule (two cores need the axes of their ends too: see
+// CapsuleManifold).
+//
 // Ids: see `collide`.
 
-/** The manifold of two convex polygons (SOFTSTEP.md section 4). */
+/** The manifold of two convex polygons, or of a polygon and a capsule or an edge (SOFTSTEP.md
+  * section 4).
+  */
 private[sims] object PolygonManifold:
 
   /** Bit set in an id when polygon B gave the reference side. */
@@ -51,21 +64,47 @@ private[sims] object PolygonManifold:
     */
   def collide(polygonA: Shape & ConvexPolygon, polygonB: Shape & ConvexPolygon, speculativeDistance: Double,
       linearSlop: Double, manifold: Manifold): Unit =
+    collideRounded(polygonA.vertexXs, polygonA.vertexYs, polygonA.sideNormalXs, polygonA.sideNormalYs, 0,
+      polygonB.vertexXs, polygonB.vertexYs, polygonB.sideNormalXs, polygonB.sideNormalYs, 0,
+      speculativeDistance, linearSlop, manifold)
+
+  /** `collide` for polygon A and capsule (or edge) B, as a polygon of two vertices (its core's
+    * ends, 0 and 1) and two sides (0: the core's right side, 1: its left) with a radius.
+    */
+  def collide(polygonA: Shape & ConvexPolygon, capsuleB: RoundedSegment, speculativeDistance: Double,
+      linearSlop: Double, manifold: Manifold): Unit =
+    collideRounded(polygonA.vertexXs, polygonA.vertexYs, polygonA.sideNormalXs, polygonA.sideNormalYs, 0,
+      capsuleB.coreXs, capsuleB.coreYs, capsuleB.coreNormalXs, capsuleB.coreNormalYs, capsuleB.radius,
+      speculativeDistance, linearSlop, manifold)
+
+  /** `collide` for capsule (or edge) A and polygon B (see the other way round). */
+  def collide(capsuleA: RoundedSegment, polygonB: Shape & ConvexPolygon, speculativeDistance: Double,
+      linearSlop: Double, manifold: Manifold): Unit =
+    collideRounded(capsuleA.coreXs, capsuleA.coreYs, capsuleA.coreNormalXs, capsuleA.coreNormalYs, capsuleA.radius,
+      polygonB.vertexXs, polygonB.vertexYs, polygonB.sideNormalXs, polygonB.sideNormalYs, 0,
+      speculativeDistance, linearSlop, manifold)
+
+  /** The manifold of polygons A and B given by their vertices, outward unit side normals and
+    * radii (0 for a plain polygon).
+    */
+  private def collideRounded(aXs: Array[Double], aYs: Array[Double], aNormalXs: Array[Double],
+      aNormalYs: Array[Double], radiusA: Double, bXs: Array[Double], bYs: Array[Double], bNormalXs: Array[Double],
+      bNormalYs: Array[Double], radiusB: Double, speculativeDistance: Double, linearSlop: Double,
+      manifold: Manifold): Unit =
     manifold.clear()
-    val aXs = polygonA.vertexXs; val aYs = polygonA.vertexYs
-    val aNormalXs = polygonA.sideNormalXs; val aNormalYs = polygonA.sideNormalYs
-    val bXs = polygonB.vertexXs; val bYs = polygonB.vertexYs
-    val bNormalXs = polygonB.sideNormalXs; val bNormalYs = polygonB.sideNormalYs
     val sideA = bestSide(aXs, aYs, aNormalXs, aNormalYs, bXs, bYs)
     val separationA = sideSeparation(aXs, aYs, aNormalXs, aNormalYs, sideA, bXs, bYs)
     val sideB = bestSide(bXs, bYs, bNormalXs, bNormalYs, aXs, aYs)
     val separationB = sideSeparation(bXs, bYs, bNormalXs, bNormalYs, sideB, aXs, aYs)
-    if separationA <= speculativeDistance && separationB <= speculativeDistance then
+    if separationA - radiusA - radiusB <= speculativeDistance && separationB - radiusA - radiusB <= speculativeDistance then
+      // Whether the cores are apart: then their nearest features may be two corners.
       val apart = separationA > 0.1 * linearSlop || separationB > 0.1 * linearSlop
       if separationB > separationA + 0.1 * linearSlop then
-        clip(polygonB, sideB, polygonA, referenceIsB = true, apart, speculativeDistance, manifold)
+        clip(bXs, bYs, bNormalXs, bNormalYs, radiusB, sideB, aXs, aYs, aNormalXs, aNormalYs, radiusA,
+          referenceIsB = true, apart, speculativeDistance, manifold)
       else
-        clip(polygonA, sideA, polygonB, referenceIsB = false, apart, speculativeDistance, manifold)
+        clip(aXs, aYs, aNormalXs, aNormalYs, radiusA, sideA, bXs, bYs, bNormalXs, bNormalYs, radiusB,
+          referenceIsB = false, apart, speculativeDistance, manifold)
 
   /** The side of a polygon (vertices xs, ys; outward unit side normals normalXs, normalYs) of
     * greatest separation from the polygon of vertices otherXs, otherYs (the first on ties).
@@ -100,20 +139,21 @@ private[sims] object PolygonManifold:
       j += 1
     least
 
-  /** The points of the reference side `side` of `reference` against the incident polygon. */
-  private def clip(reference: ConvexPolygon, side: Int, incident: ConvexPolygon, referenceIsB: Boolean,
-      apart: Boolean, speculativeDistance: Double, manifold: Manifold): Unit =
-    val referenceXs = reference.vertexXs
-    val referenceYs = reference.vertexYs
-    val normalX = reference.sideNormalXs(side)
-    val normalY = reference.sideNormalYs(side)
+  /** The points of the reference side `side` of the reference polygon (vertices, normals,
+    * radius) against the incident polygon.
+    */
+  private def clip(referenceXs: Array[Double], referenceYs: Array[Double], referenceNormalXs: Array[Double],
+      referenceNormalYs: Array[Double], referenceRadius: Double, side: Int, incidentXs: Array[Double],
+      incidentYs: Array[Double], incidentNormalXs: Array[Double], incidentNormalYs: Array[Double],
+      incidentRadius: Double, referenceIsB: Boolean, apart: Boolean, speculativeDistance: Double,
+      manifold: Manifold): Unit =
+    val normalX = referenceNormalXs(side)
+    val normalY = referenceNormalYs(side)
     val referenceNext = if side + 1 == referenceXs.length then 0 else side + 1
     val r1x = referenceXs(side); val r1y = referenceYs(side)
     val r2x = referenceXs(referenceNext); val r2y = referenceYs(referenceNext)
 
-    val incidentSide = mostAntiParallelSide(incident, normalX, normalY)
-    val incidentXs = incident.vertexXs
-    val incidentYs = incident.vertexYs
+    val incidentSide = mostAntiParallelSide(incidentNormalXs, incidentNormalYs, normalX, normalY)
     val incidentNext = if incidentSide + 1 == incidentXs.length then 0 else incidentSide + 1
     val p1x = incidentXs(incidentSide); val p1y = incidentYs(incidentSide)
     val p2x = incidentXs(incidentNext); val p2y = incidentYs(incidentNext)
@@ -127,10 +167,10 @@ private[sims] object PolygonManifold:
     val p2Id = idBase | incidentNext
 
     val corner = apart && (
-      cornerPoint(r1x, r1y, r2x, r2y, p1x, p1y, p2x, p2y, p1Id, orientation, speculativeDistance, manifold) ||
-        cornerPoint(r1x, r1y, r2x, r2y, p2x, p2y, p1x, p1y, p2Id, orientation, speculativeDistance, manifold) ||
-        cornerPoint(r2x, r2y, r1x, r1y, p1x, p1y, p2x, p2y, p1Id, orientation, speculativeDistance, manifold) ||
-        cornerPoint(r2x, r2y, r1x, r1y, p2x, p2y, p1x, p1y, p2Id, orientation, speculativeDistance, manifold))
+      cornerPoint(r1x, r1y, r2x, r2y, p1x, p1y, p2x, p2y, p1Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
+        cornerPoint(r1x, r1y, r2x, r2y, p2x, p2y, p1x, p1y, p2Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
+        cornerPoint(r2x, r2y, r1x, r1y, p1x, p1y, p2x, p2y, p1Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
+        cornerPoint(r2x, r2y, r1x, r1y, p2x, p2y, p1x, p1y, p2Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold))
 
     if !corner then
       val length = math.sqrt((r2x - r1x) * (r2x - r1x) + (r2y - r1y) * (r2y - r1y))
@@ -143,15 +183,14 @@ private[sims] object PolygonManifold:
         val fraction1 = if u1 > length then (u1 - length) / (u1 - u2) else 0.0
         val fraction2 = if u2 < 0 then -u2 / (u1 - u2) else 0.0
         addClipped(p1x + (p2x - p1x) * fraction1, p1y + (p2y - p1y) * fraction1, r1x, r1y, normalX, normalY,
-          p1Id, speculativeDistance, manifold)
+          p1Id, referenceRadius, incidentRadius, speculativeDistance, manifold)
         addClipped(p2x + (p1x - p2x) * fraction2, p2y + (p1y - p2y) * fraction2, r1x, r1y, normalX, normalY,
-          p2Id, speculativeDistance, manifold)
+          p2Id, referenceRadius, incidentRadius, speculativeDistance, manifold)
     if manifold.pointCount == 0 then manifold.clear() // no normal without a contact
 
-  /** The side of `polygon` whose outward normal is most anti-parallel to (normalX, normalY). */
-  private def mostAntiParallelSide(polygon: ConvexPolygon, normalX: Double, normalY: Double): Int =
-    val normalXs = polygon.sideNormalXs
-    val normalYs = polygon.sideNormalYs
+  /** The side whose outward normal (normalXs, normalYs) is most anti-parallel to (normalX, normalY). */
+  private def mostAntiParallelSide(normalXs: Array[Double], normalYs: Array[Double], normalX: Double,
+      normalY: Double): Int =
     var best = 0
     var lowest = Double.PositiveInfinity
     var i = 0
@@ -163,29 +202,37 @@ private[sims] object PolygonManifold:
       i += 1
     best
 
-  /** Adds the clipped incident point (qx, qy) midway between it and the reference line through
-    * (r1x, r1y) of normal (normalX, normalY), if its separation is at most `speculativeDistance`.
+  /** Adds the clipped incident point (qx, qy) midway between the two surfaces, the reference's
+    * along (normalX, normalY) from the line through (r1x, r1y), if its separation is at most
+    * `speculativeDistance`.
     */
   private def addClipped(qx: Double, qy: Double, r1x: Double, r1y: Double, normalX: Double, normalY: Double,
-      id: Int, speculativeDistance: Double, manifold: Manifold): Unit =
-    val separation = normalX * (qx - r1x) + normalY * (qy - r1y)
+      id: Int, referenceRadius: Double, incidentRadius: Double, speculativeDistance: Double, manifold: Manifold): Unit =
+    val core = normalX * (qx - r1x) + normalY * (qy - r1y)
+    val separation = core - referenceRadius - incidentRadius
     if separation <= speculativeDistance then
-      manifold.addPoint(qx - normalX * 0.5 * separation, qy - normalY * 0.5 * separation, separation, id)
+      val shift = core + incidentRadius - referenceRadius // twice q's distance to the middle
+      manifold.addPoint(qx - normalX * 0.5 * shift, qy - normalY * 0.5 * shift, separation, id)
 
   /** True when reference vertex r and incident vertex p are the closest points of their sides
-    * (whose other ends are rOther and pOther); then the corner point, normal from r to p turned
-    * by `orientation`, is added if their distance is at most `speculativeDistance`.
+    * (whose other ends are rOther and pOther); then the corner point, midway between the two
+    * surfaces on the line from r to p (its normal turned by `orientation`), is added if their
+    * separation is at most `speculativeDistance`.
     */
   private def cornerPoint(rx: Double, ry: Double, rOtherX: Double, rOtherY: Double, px: Double, py: Double,
-      pOtherX: Double, pOtherY: Double, id: Int, orientation: Double, speculativeDistance: Double,
+      pOtherX: Double, pOtherY: Double, id: Int, orientation: Double, referenceRadius: Double,
+      incidentRadius: Double, speculativeDistance: Double,
       manifold: Manifold): Boolean =
     val dx = px - rx
     val dy = py - ry
     val closest = dx * (rOtherX - rx) + dy * (rOtherY - ry) < 0 && dx * (pOtherX - px) + dy * (pOtherY - py) > 0
     if closest then
       val distance = math.sqrt(dx * dx + dy * dy) // > 0: the polygons are apart
-      if distance <= speculativeDistance then
+      val separation = distance - referenceRadius - incidentRadius
+      if separation <= speculativeDistance then
         manifold.normalX = orientation * dx / distance
         manifold.normalY = orientation * dy / distance
-        manifold.addPoint(rx + 0.5 * dx, ry + 0.5 * dy, distance, id)
+        // From r along d to the middle of the surfaces: (distance + rReference - rIncident) / 2.
+        val reach = 0.5 * (distance + referenceRadius - incidentRadius) / distance
+        manifold.addPoint(rx + dx * reach, ry + dy * reach, separation, id)
     closest

@@ -1,7 +1,7 @@
 package sims.collision.narrowphase
 
-import sims.collision.{CircleCollision, Collision, PolyCircleCollision, PolyCollision}
-import sims.dynamics.{Circle, Shape}
+import sims.collision.{CapsuleCollision, CircleCollision, Collision, PolyCircleCollision, PolyCollision}
+import sims.dynamics.{Circle, RoundedSegment, Shape}
 import sims.geometry.ConvexPolygon
 
 /** The built-in narrowphase methods (SPEC section 4): partial functions for the detector's
@@ -27,6 +27,7 @@ private[sims] object BuiltInMethods:
   private def is(kind: ShapeKind, shape: Shape): Boolean = kind match
     case ShapeKind.Circle => shape.isInstanceOf[Circle]
     case ShapeKind.Polygon => shape.isInstanceOf[ConvexPolygon]
+    case ShapeKind.Capsule => shape.isInstanceOf[RoundedSegment]
 
   private type Polygon = Shape & ConvexPolygon
 
@@ -48,10 +49,17 @@ private[sims] object BuiltInMethods:
   val circlePolygonCollision = Make(PairKind.CirclePolygon,
     (a, b) => PolyCircleCollision(b.asInstanceOf[Polygon], a.asInstanceOf[Circle]))
 
+  /** The kinds with a capsule or an edge: one test and one constructor serve them all. */
+  private val capsuleKinds = Seq(PairKind.CapsuleCircle, PairKind.CircleCapsule, PairKind.CapsuleCapsule,
+    PairKind.PolygonCapsule, PairKind.CapsulePolygon)
+  val capsuleTests: Seq[Test] = capsuleKinds.map(Test(_, CapsuleCollision.colliding))
+  val capsuleCollisions: Seq[Make] = capsuleKinds.map(Make(_, CapsuleCollision(_, _)))
+
   /** The tests, in the order the detector's list starts with. */
   def tests: Seq[PartialFunction[(Shape, Shape), Boolean]] =
-    Seq(circleCircleTest, polygonPolygonTest, polygonCircleTest, circlePolygonTest)
+    Seq(circleCircleTest, polygonPolygonTest, polygonCircleTest, circlePolygonTest) ++ capsuleTests
 
   /** The collision constructors, in the order the detector's list starts with. */
   def collisions: Seq[PartialFunction[(Shape, Shape), Collision]] =
-    Seq(circleCircleCollision, polygonPolygonCollision, polygonCircleCollision, circlePolygonCollision)
+    Seq(circleCircleCollision, polygonPolygonCollision, polygonCircleCollision, circlePolygonCollision) ++
+      capsuleCollisions

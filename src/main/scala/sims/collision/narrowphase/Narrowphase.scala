@@ -1,7 +1,8 @@
 package sims.collision.narrowphase
 
 import scala.collection.mutable.ArrayBuffer
-import sims.collision.{CircleCollision, Collision, PolyCircleCollision, PolyCollision}
+import sims.collision.{CapsuleCollision, CircleCollision, Collision, PolyCircleCollision, PolyCollision}
+import sims.collision.manifold.Manifold
 import sims.dynamics.{Circle, Shape}
 import sims.geometry.ConvexPolygon
 
@@ -70,6 +71,8 @@ private[sims] final class Narrowphase:
           case PairKind.PolygonPolygon => polygonPolygon(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Polygon])
           case PairKind.PolygonCircle => polygonCircle(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Circle])
           case PairKind.CirclePolygon => polygonCircle(slot, b.asInstanceOf[Polygon], a.asInstanceOf[Circle])
+          case PairKind.CapsuleCircle | PairKind.CapsuleCapsule | PairKind.PolygonCapsule => capsule(slot, a, b)
+          case PairKind.CircleCapsule | PairKind.CapsulePolygon => capsule(slot, b, a)
         slot.doneFirst = a
         slot.doneSecond = b
         slot.donePlacements1 = placements1
@@ -99,6 +102,16 @@ private[sims] final class Narrowphase:
       if slot.polyCircle == null then slot.polyCircle = PolyCircleCollision(p, c)
       else slot.polyCircle.compute(p, c)
       slot.polyCircle
+
+  /** The contact of a pair with a capsule or an edge, `reference` first (see
+    * [[sims.collision.CapsuleCollision]]); each slot keeps its own object, as for circles.
+    */
+  private def capsule(slot: PairSlot, reference: Shape, incident: Shape): Collision =
+    if slot.capsule == null then slot.capsule = CapsuleCollision.empty()
+    if slot.capsule.compute(reference, incident, scratch) then slot.capsule else null
+
+  // The capsule kinds' manifold, filled and read at once by `capsule`.
+  private val scratch = Manifold()
 
   // Collision objects of the polygon kinds that no slot holds, handed to the next slot that
   // needs one. A slot gives its object back when its pair stops colliding or is of another kind

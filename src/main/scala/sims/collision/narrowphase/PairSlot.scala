@@ -1,6 +1,6 @@
 package sims.collision.narrowphase
 
-import sims.collision.{CircleCollision, Collision, PolyCircleCollision, PolyCollision}
+import sims.collision.{CapsuleCollision, CircleCollision, Collision, PolyCircleCollision, PolyCollision}
 import sims.dynamics.Shape
 
 /** One candidate pair and what the narrowphase keeps to rerun on it cheaply: the resolved
@@ -18,6 +18,7 @@ private[sims] final class PairSlot:
   var circle: CircleCollision = null
   var polyCircle: PolyCircleCollision = null
   var poly: PolyCollision = null
+  var capsule: CapsuleCollision = null
   // The last result and the inputs it was computed from.
   var doneFirst: Shape = null
   var doneSecond: Shape = null

@@ -1,19 +1,21 @@
 package sims.collision.narrowphase
 
-import sims.dynamics.{Circle, Shape}
+import sims.dynamics.{Circle, RoundedSegment, Shape}
 import sims.geometry.ConvexPolygon
 
 /** The built-in kinds of shapes the narrowphase has its own functions for. A shape of another
-  * kind (a user's) goes through the detector's partial-function lists.
+  * kind (a user's) goes through the detector's partial-function lists. Capsules and edges are
+  * one kind: a segment with a radius (0 for an edge).
   */
 private[sims] enum ShapeKind:
-  case Circle, Polygon
+  case Circle, Polygon, Capsule
 
 private[sims] object ShapeKind:
   /** The kind of `shape`, or null for a user kind. */
   def of(shape: Shape): ShapeKind = shape match
     case _: Circle => ShapeKind.Circle
     case _: ConvexPolygon => ShapeKind.Polygon
+    case _: RoundedSegment => ShapeKind.Capsule
     case _ => null
 
 /** A pair of built-in kinds, in the order (first, second) of a candidate pair: the key of the
@@ -24,3 +26,8 @@ private[sims] enum PairKind(val first: ShapeKind, val second: ShapeKind):
   case PolygonPolygon extends PairKind(ShapeKind.Polygon, ShapeKind.Polygon)
   case PolygonCircle extends PairKind(ShapeKind.Polygon, ShapeKind.Circle)
   case CirclePolygon extends PairKind(ShapeKind.Circle, ShapeKind.Polygon)
+  case CapsuleCircle extends PairKind(ShapeKind.Capsule, ShapeKind.Circle)
+  case CircleCapsule extends PairKind(ShapeKind.Circle, ShapeKind.Capsule)
+  case CapsuleCapsule extends PairKind(ShapeKind.Capsule, ShapeKind.Capsule)
+  case PolygonCapsule extends PairKind(ShapeKind.Polygon, ShapeKind.Capsule)
+  case CapsulePolygon extends PairKind(ShapeKind.Capsule, ShapeKind.Polygon)

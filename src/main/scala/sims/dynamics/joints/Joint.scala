@@ -11,6 +11,33 @@ abstract class Joint extends Constraint:
   /** The second body. */
   val node2: Body
 
+  private var _collideConnected = sims.Defaults.CollideConnected
+
+  /** Whether `node1` and `node2` collide with each other (default true, as in SiMS 1.2; Box2D's
+    * joints default to false). Setting it takes effect at the next step, in a world or not.
+    */
+  def collideConnected: Boolean = _collideConnected
+
+  /** Lets the two bodies collide with each other (true) or not (false). */
+  def collideConnected_=(value: Boolean): Unit =
+    if value != _collideConnected then
+      _collideConnected = value
+      if world != null then keepApart(!value)
+
+  /** The world this joint is in, or null. */
+  private[sims] var world: World = null
+
+  /** Records (`apart` true) or forgets (false) on both bodies that this joint keeps them from
+    * colliding; the world calls it when a joint with `collideConnected` false joins or leaves.
+    */
+  private[sims] def keepApart(apart: Boolean): Unit =
+    if apart then
+      node1.addJointPartner(node2)
+      node2.addJointPartner(node1)
+    else
+      node1.removeJointPartner(node2)
+      node2.removeJointPartner(node1)
+
   /** Fails unless the two bodies exist and differ; called by every joint's constructor. */
   protected def checkNodes(): Unit =
     if node1 == null then throw IllegalArgumentException("node1 must not be null")

@@ -3,9 +3,10 @@ package sims.solver.soft
 import sims.Defaults
 import sims.collision.{Collision, GridDetector, PairBuffer}
 import sims.collision.broadphase.UniformGrid
-import sims.collision.manifold.{CircleManifold, Manifold, PolygonCircleManifold, PolygonManifold}
+import sims.collision.manifold.{CapsuleCircleManifold, CapsuleManifold, CircleManifold, Manifold, PolygonCircleManifold,
+  PolygonManifold}
 import sims.collision.narrowphase.{Narrowphase, PairKind}
-import sims.dynamics.{Circle, Shape, World}
+import sims.dynamics.{Circle, RoundedSegment, Shape, World}
 import sims.geometry.ConvexPolygon
 import sims.solver.soft.ContactTable.*
 
@@ -46,7 +47,7 @@ private[sims] final class ContactFinder:
       case detector: GridDetector =>
         grid.gridSide = detector.gridSide
         pairs.limit = detector.maxPairs
-        grid.update(world.shapeBuffer, speculativeDistance, timeStep)
+        grid.update(world.shapeBuffer, speculativeDistance, timeStep, everyShape = false)
         pairs.clear()
         grid.findPairs(pairs, inGridOrder = false)
         narrowphase.update(detector.detectionMethods, detector.collisionMethods)
@@ -104,6 +105,19 @@ private[sims] final class ContactFinder:
         PolygonCircleManifold.collide(a.asInstanceOf[Polygon], b.asInstanceOf[Circle], lastSide, speculativeDistance, manifold)
       case PairKind.CirclePolygon =>
         PolygonCircleManifold.collide(a.asInstanceOf[Circle], b.asInstanceOf[Polygon], lastSide, speculativeDistance, manifold)
+      case PairKind.CapsuleCircle =>
+        CapsuleCircleManifold.collide(a.asInstanceOf[RoundedSegment], b.asInstanceOf[Circle], speculativeDistance, manifold)
+      case PairKind.CircleCapsule =>
+        CapsuleCircleManifold.collide(a.asInstanceOf[Circle], b.asInstanceOf[RoundedSegment], speculativeDistance, manifold)
+      case PairKind.CapsuleCapsule =>
+        CapsuleManifold.collide(a.asInstanceOf[RoundedSegment], b.asInstanceOf[RoundedSegment], speculativeDistance,
+          linearSlop, manifold)
+      case PairKind.PolygonCapsule =>
+        PolygonManifold.collide(a.asInstanceOf[Polygon], b.asInstanceOf[RoundedSegment], speculativeDistance, linearSlop,
+          manifold)
+      case PairKind.CapsulePolygon =>
+        PolygonManifold.collide(a.asInstanceOf[RoundedSegment], b.asInstanceOf[Polygon], speculativeDistance, linearSlop,
+          manifold)
 
   /** Appends the manifold of shapes (a, b) as a contact, warm started from the last step's
     * contact `last` (or -1) point by point through the feature ids.

@@ -56,16 +56,7 @@ class CircleManifoldSpec extends AnyFunSuite with Matchers with ScalaCheckProper
     shouldHavePoint(collide(circle(1, 2, 3), circle(0.5, 2, 3)), 0, 1, 2, 3 + 0.25, -1.5)
   }
 
-  private val circlePairs: Gen[(Circle, Circle)] =
-    for
-      p <- position
-      a <- circleAt(p.x, p.y)
-      b <- circleAt(0, 0)
-      u <- direction
-      g <- gap
-    yield
-      placeAtGap(a, b, u, g)
-      (a, b)
+  private val circlePairs: Gen[(Circle, Circle)] = pairsOf(circleAt, circleAt)
 
   test("property: swapping the circles negates the normal and keeps the point") {
     forAll(circlePairs, minSuccessful(300)) { case (a, b) =>

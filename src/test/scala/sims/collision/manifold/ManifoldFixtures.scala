@@ -1,7 +1,7 @@
 package sims.collision.manifold
 
 import org.scalacheck.Gen
-import sims.dynamics.{Circle, Rectangle, RegularPolygon, Shape}
+import sims.dynamics.{Capsule, Circle, Edge, Rectangle, RegularPolygon, RoundedSegment, Shape}
 import sims.geometry.{ConvexPolygon, Vector2D}
 
 /** Shapes, brute-force geometry and generators shared by the manifold specs. The shapes are
@@ -30,6 +30,11 @@ object ManifoldFixtures:
   def box(halfWidth: Double, halfHeight: Double, x: Double, y: Double, rotation: Double = 0): Rectangle =
     val b = Rectangle(halfWidth, halfHeight, 1); b.pos = Vector2D(x, y); b.rotation = rotation; b
 
+  def capsule(halfLength: Double, radius: Double, x: Double, y: Double, rotation: Double = 0): Capsule =
+    val c = Capsule(halfLength, radius, 1); c.pos = Vector2D(x, y); c.rotation = rotation; c
+
+  def edge(x1: Double, y1: Double, x2: Double, y2: Double): Edge = Edge(Vector2D(x1, y1), Vector2D(x2, y2))
+
   /** A triangle as a user's own shape: only `vertices` given, ConvexPolygon's defaults for the rest. */
   final class Triangle(corners: IndexedSeq[Vector2D]) extends Shape with ConvexPolygon:
     val density = 1.0
@@ -50,9 +55,34 @@ object ManifoldFixtures:
     val t = math.max(0.0, math.min(1.0, ((px - ax) * ex + (py - ay) * ey) / (ex * ex + ey * ey)))
     math.hypot(px - (ax + t * ex), py - (ay + t * ey))
 
-  /** Distance of (px, py) from the outline of `shape` (a circle or a convex polygon). */
+  /** Distance of (px, py) from the core of a capsule or an edge. */
+  def coreDistance(s: RoundedSegment, px: Double, py: Double): Double =
+    segmentDistance(s.vertex1.x, s.vertex1.y, s.vertex2.x, s.vertex2.y, px, py)
+
+  /** True if the segments a-b and c-d cross or touch. */
+  def segmentsMeet(a: Vector2D, b: Vector2D, c: Vector2D, d: Vector2D): Boolean =
+    def side(p: Vector2D, q: Vector2D, r: Vector2D) = math.signum((q - p) cross (r - p))
+    def within(p: Vector2D, q: Vector2D, r: Vector2D) = // r on the line p-q: between them?
+      math.min(p.x, q.x) <= r.x && r.x <= math.max(p.x, q.x) && math.min(p.y, q.y) <= r.y && r.y <= math.max(p.y, q.y)
+    val (s1, s2, s3, s4) = (side(a, b, c), side(a, b, d), side(c, d, a), side(c, d, b))
+    (s1 * s2 < 0 && s3 * s4 < 0) || (s1 == 0 && within(a, b, c)) || (s2 == 0 && within(a, b, d)) ||
+      (s3 == 0 && within(c, d, a)) || (s4 == 0 && within(c, d, b))
+
+  /** Distance between the segments a-b and c-d: 0 if they meet, else the least end-to-segment distance. */
+  def segmentsDistance(a: Vector2D, b: Vector2D, c: Vector2D, d: Vector2D): Double =
+    if segmentsMeet(a, b, c, d) then 0.0
+    else
+      Seq(segmentDistance(a.x, a.y, b.x, b.y, c.x, c.y), segmentDistance(a.x, a.y, b.x, b.y, d.x, d.y),
+        segmentDistance(c.x, c.y, d.x, d.y, a.x, a.y), segmentDistance(c.x, c.y, d.x, d.y, b.x, b.y)).min
+
+  /** Distance between a convex polygon and a segment: 0 if the segment enters the polygon. */
+  def polygonSegmentDistance(p: ConvexPolygon, a: Vector2D, b: Vector2D): Double =
+    if p.contains(a) || p.contains(b) then 0.0 else p.sides.map(side => segmentsDistance(side.vertex1, side.vertex2, a, b)).min
+
+  /** Distance of (px, py) from the outline of `shape` (a circle, a convex polygon, a capsule or an edge). */
   def outlineDistance(shape: Shape, px: Double, py: Double): Double = shape match
     case c: Circle => math.abs(math.hypot(px - c.x, py - c.y) - c.radius)
+    case s: RoundedSegment => math.abs(coreDistance(s, px, py) - s.radius)
     case p: ConvexPolygon => polygonOutlineDistance(p, px, py)
     case _ => throw IllegalArgumentException(s"no outline for $shape")
 
@@ -74,6 +104,12 @@ object ManifoldFixtures:
   /** The distance between the shapes; 0 when they touch or overlap. */
   def distance(a: Shape, b: Shape): Double = (a, b) match
     case (c1: Circle, c2: Circle) => math.max(0.0, math.hypot(c2.x - c1.x, c2.y - c1.y) - c1.radius - c2.radius)
+    case (s: RoundedSegment, c: Circle) => math.max(0.0, coreDistance(s, c.x, c.y) - s.radius - c.radius)
+    case (c: Circle, s: RoundedSegment) => distance(s, c)
+    case (s: RoundedSegment, t: RoundedSegment) =>
+      math.max(0.0, segmentsDistance(s.vertex1, s.vertex2, t.vertex1, t.vertex2) - s.radius - t.radius)
+    case (p: ConvexPolygon, s: RoundedSegment) => math.max(0.0, polygonSegmentDistance(p, s.vertex1, s.vertex2) - s.radius)
+    case (s: RoundedSegment, p: ConvexPolygon) => distance(p, s)
     case (c: Circle, p: Shape) => distance(p, c)
     case (p: ConvexPolygon, c: Circle) =>
       if p.contains(c.pos) then 0.0 else math.max(0.0, polygonOutlineDistance(p, c.x, c.y) - c.radius)
@@ -93,6 +129,19 @@ object ManifoldFixtures:
         for n <- Gen.choose(3, 8); r <- Gen.choose(0.1, 2.0) yield RegularPolygon(n, r, 1))
       rotation <- Gen.choose(-math.Pi, math.Pi)
     yield
+      shape.pos = Vector2D(x, y)
+      shape.rotation = rotation
+      shape
+
+  /** A capsule of random size and rotation, or (one in four) an edge, centred at (x, y). */
+  def capsuleAt(x: Double, y: Double): Gen[RoundedSegment] =
+    for
+      halfLength <- Gen.choose(0.1, 2.0)
+      radius <- Gen.choose(0.05, 1.0)
+      isEdge <- Gen.choose(0, 3).map(_ == 0)
+      rotation <- Gen.choose(-math.Pi, math.Pi)
+    yield
+      val shape = if isEdge then edge(-halfLength, 0, halfLength, 0) else Capsule(halfLength, radius, 1)
       shape.pos = Vector2D(x, y)
       shape.rotation = rotation
       shape
@@ -121,6 +170,21 @@ object ManifoldFixtures:
       if distanceAt(middle) <= target then near = middle else far = middle
     // Pushed in at most halfway to the centre: distinct centres keep the laws well defined.
     at(if gap > 0 then far else math.max(0.5 * near, near + gap))
+
+  /** Pairs of `first` and `second` shapes (made at the given centres), from deep overlap to
+    * farther apart than the speculative distance (or at the `gaps` given).
+    */
+  def pairsOf[A <: Shape, B <: Shape](first: (Double, Double) => Gen[A], second: (Double, Double) => Gen[B],
+      gaps: Gen[Double] = gap): Gen[(A, B)] =
+    for
+      p <- position
+      a <- first(p.x, p.y)
+      b <- second(0, 0)
+      u <- direction
+      g <- gaps
+    yield
+      placeAtGap(a, b, u, g)
+      (a, b)
 
   /** A unit direction. */
   val direction: Gen[Vector2D] = Gen.choose(-math.Pi, math.Pi).map(angle => Vector2D(math.cos(angle), math.sin(angle)))

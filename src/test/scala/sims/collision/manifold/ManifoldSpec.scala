@@ -49,6 +49,8 @@ class ManifoldSpec extends AnyFunSuite with Matchers:
     val block = box(0.5, 0.5, 0, 0)
     val ball = circle(0.3, 0, 0)
     val other = circle(0.2, 0, 0)
+    val pill = capsule(0.5, 0.2, 0, 0)
+    val ground = edge(-3, 0.5, 3, 0.5)
     var sum = 0.0 // read, so that no call can be dropped
     def collideAll(times: Int): Unit =
       var i = 0
@@ -65,11 +67,18 @@ class ManifoldSpec extends AnyFunSuite with Matchers:
         sum += manifold.pointCount
         CircleManifold.collide(ball, other, SpeculativeDistance, manifold)
         sum += manifold.pointCount
+        pill.place(-1 + shift, 0.69 + shift, (i % 5) * 0.02) // on the edge and the floor, parallel or not
+        CapsuleManifold.collide(ground, pill, SpeculativeDistance, LinearSlop, manifold)
+        sum += manifold.pointCount
+        CapsuleCircleManifold.collide(pill, ball, SpeculativeDistance, manifold)
+        sum += manifold.pointCount
+        PolygonManifold.collide(floor, pill, SpeculativeDistance, LinearSlop, manifold)
+        sum += manifold.pointCount
         i += 1
     collideAll(50000) // warm up: let the JIT compile every path
     val before = threads.getCurrentThreadAllocatedBytes
     collideAll(100000)
     val allocated = threads.getCurrentThreadAllocatedBytes - before
     sum should be > 0.0
-    allocated should be < 10000L // 400 000 calls: not one byte per call
+    allocated should be < 10000L // 700 000 calls: not one byte per call
   }

@@ -105,16 +105,7 @@ class PolygonCircleManifoldSpec extends AnyFunSuite with Matchers with ScalaChec
     shouldHavePoint(manifold, 1 / s, 1 / s, 2 - (s + 1.4) / 2 / s, 2 - (s + 1.4) / 2 / s, s - 1.4, 1, 1)
   }
 
-  private val pairs: Gen[(Polygon, Circle)] =
-    for
-      p <- position
-      polygon <- polygonAt(p.x, p.y)
-      circle <- circleAt(0, 0)
-      u <- direction
-      g <- gap
-    yield
-      placeAtGap(polygon, circle, u, g)
-      (polygon, circle)
+  private val pairs: Gen[(Polygon, Circle)] = pairsOf(polygonAt, circleAt)
 
   private val lastSide: Gen[Int] = Gen.choose(-1, 7)
 

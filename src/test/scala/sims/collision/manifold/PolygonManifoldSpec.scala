@@ -1,16 +1,13 @@
 package sims.collision.manifold
 
 import org.scalacheck.Gen
-import org.scalatest.funsuite.AnyFunSuite
-import org.scalatest.matchers.should.Matchers
-import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
 import sims.collision.manifold.ManifoldFixtures.*
 import sims.collision.manifold.PolygonManifold.{ReferenceIsB, SideShift}
 import sims.dynamics.Rectangle
 import sims.geometry.Vector2D
 
 /** Polygon-polygon manifolds: hand-computed cases and the laws of the narrowphase. */
-class PolygonManifoldSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
+class PolygonManifoldSpec extends ManifoldLaws:
 
   private val tolerance = 1e-12
 
@@ -131,16 +128,7 @@ class PolygonManifoldSpec extends AnyFunSuite with Matchers with ScalaCheckPrope
   }
 
   // Random pairs, from deep overlap to farther apart than the speculative distance.
-  private val pairs: Gen[(Polygon, Polygon)] =
-    for
-      p <- position
-      a <- polygonAt(p.x, p.y)
-      b <- polygonAt(0, 0)
-      u <- direction
-      g <- gap
-    yield
-      placeAtGap(a, b, u, g)
-      (a, b)
+  private val pairs: Gen[(Polygon, Polygon)] = pairsOf(polygonAt, polygonAt)
 
   /** The best separation of each polygon's sides from the other. */
   private def separations(a: Polygon, b: Polygon): (Double, Double) =
@@ -163,38 +151,9 @@ class PolygonManifoldSpec extends AnyFunSuite with Matchers with ScalaCheckPrope
     }
   }
 
-  test("property: moving the pair rigidly moves the points with it and keeps separations and ids") {
-    forAll(pairs, Gen.choose(-math.Pi, math.Pi), position, minSuccessful(500)) { case ((a, b), angle, shift) =>
-      val before = collide(a, b)
-      moveRigidly(a, angle, shift.x, shift.y)
-      moveRigidly(b, angle, shift.x, shift.y)
-      val after = collide(a, b)
-      after.pointCount shouldBe before.pointCount
-      for (moved, p) <- points(after).zip(points(before)) do
-        val expected = Vector2D(p.x, p.y).rotate(angle) + shift
-        moved.x shouldBe expected.x +- 1e-9
-        moved.y shouldBe expected.y +- 1e-9
-        moved.separation shouldBe p.separation +- 1e-9
-        moved.id shouldBe p.id
-      if before.pointCount > 0 then
-        val normal = Vector2D(before.normalX, before.normalY).rotate(angle)
-        after.normalX shouldBe normal.x +- 1e-9
-        after.normalY shouldBe normal.y +- 1e-9
-    }
-  }
-
-  test("property: each point lies within |s| / 2 of both outlines, with s at most the speculative distance") {
-    forAll(pairs, minSuccessful(500)) { case (a, b) =>
-      val manifold = collide(a, b)
-      for p <- points(manifold) do
-        val half = math.abs(p.separation) / 2 + 1e-9
-        outlineDistance(a, p.x, p.y) should be <= half
-        outlineDistance(b, p.x, p.y) should be <= half
-        p.separation should be <= SpeculativeDistance
-      if manifold.pointCount > 0 then math.hypot(manifold.normalX, manifold.normalY) shouldBe 1.0 +- tolerance
-      if manifold.pointCount == 2 then manifold.id(0) should not be manifold.id(1)
-    }
-  }
+  // Rigid motion, points midway between the outlines, gaps and overlaps: the laws of every
+  // manifold function.
+  manifoldLaws("two polygons", pairs, collide)
 
   test("property: overlapping pairs have a point of separation <= 0; apart ones none below their distance") {
     forAll(pairs, minSuccessful(500)) { case (a, b) =>

@@ -54,7 +54,8 @@ object HeadlessRun:
     val gifFile = File(directory, s"$base.gif")
     val pngFile = File(directory, s"$base.png")
     val csvFile = File(directory, s"$base.csv")
-    val world = scene.build().world
+    val staged = scene.build()
+    val world = staged.world
     world.solver = solver.solver
     val viewport = Viewport.fit(scene.view, Width, Height)
     val totalSteps = math.round(seconds / world.timeStep)
@@ -64,7 +65,8 @@ object HeadlessRun:
     // The classic step's captions stay as they always were; the soft step's say so.
     val named = if solver == SolverChoice.Classic then "" else s"  (${solver.label})"
     def picture(smooth: Boolean) =
-      Renderer.image(world, viewport, RenderOptions(caption = f"${scene.name}  t = ${world.time}%.2f s$named", smooth = smooth))
+      Renderer.image(world, viewport, RenderOptions(caption = f"${scene.name}  t = ${world.time}%.2f s$named", smooth = smooth),
+        staged.overlay())
     var steps = 0L
     var stepNanos = 0L
     var nextFrame = 0

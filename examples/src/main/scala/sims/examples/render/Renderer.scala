@@ -4,9 +4,10 @@ import java.awt.{BasicStroke, Color, Font, Graphics2D, RenderingHints}
 import java.awt.geom.{Ellipse2D, Line2D, Path2D, Rectangle2D}
 import java.awt.image.BufferedImage
 import sims.collision.GridDetector
-import sims.dynamics.{Body, Circle, Shape, World}
+import sims.dynamics.{Body, Circle, Edge, RoundedSegment, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.geometry.{ConvexPolygon, Vector2D}
+import sims.scenes.Overlay
 
 /** Draws a world onto a `Graphics2D` through a [[Viewport]]: bodies, joints and the overlays
   * chosen in [[RenderOptions]]. The headless runs (GIF, PNG) and the viewer share it, so what
@@ -32,25 +33,30 @@ object Renderer:
   val BoxColour: Color = Color(0x2a9d8f)
   /** Colour of the broadphase grid. */
   val GridColour: Color = Color(0xd8d3c4)
+  /** Colour of an overlay's lines (a scene's laser). */
+  val LineColour: Color = Color(0xff1f4b)
+  /** Colour of an overlay's highlighted shapes and marked boxes. */
+  val HighlightColour: Color = Color(0xffd400)
   /** Every colour drawn without smoothing: the palette of the GIF frames. */
   val colours: IndexedSeq[Color] =
     (IndexedSeq(Background, FixedFill, FixedFill.darker(), JointColour, RailColour, ContactColour, SpeculativeColour,
-      BoxColour, GridColour) ++
-      Palette ++ Palette.map(_.darker())).distinct
+      BoxColour, GridColour, LineColour, HighlightColour) ++ Palette ++ Palette.map(_.darker())).distinct
 
   /** Below this many pixels per grid cell the grid is not drawn (it would fill the picture). */
   private val MinimumCellPixels = 4.0
 
-  /** A new RGB picture of the world as seen through `viewport`. */
-  def image(world: World, viewport: Viewport, options: RenderOptions = RenderOptions()): BufferedImage =
+  /** A new RGB picture of the world as seen through `viewport`, with a scene's `overlay`. */
+  def image(world: World, viewport: Viewport, options: RenderOptions = RenderOptions(),
+      overlay: Overlay = Overlay.empty): BufferedImage =
     val picture = BufferedImage(viewport.width, viewport.height, BufferedImage.TYPE_INT_RGB)
     val g = picture.createGraphics()
-    try draw(g, world, viewport, options)
+    try draw(g, world, viewport, options, overlay)
     finally g.dispose()
     picture
 
-  /** Draws the world over the whole viewport area of `g` (background first). */
-  def draw(g: Graphics2D, world: World, viewport: Viewport, options: RenderOptions = RenderOptions()): Unit =
+  /** Draws the world over the whole viewport area of `g` (background first), then `overlay`. */
+  def draw(g: Graphics2D, world: World, viewport: Viewport, options: RenderOptions = RenderOptions(),
+      overlay: Overlay = Overlay.empty): Unit =
     if options.smooth then
       g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON)
       g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE)
@@ -66,6 +72,7 @@ object Renderer:
       drawBody(g, bodies(i), i, viewport)
       i += 1
     world.joints.foreach(drawJoint(g, _, viewport))
+    drawOverlay(g, overlay, viewport)
     if options.boxes then world.shapes.foreach(drawBox(g, _, viewport))
     if options.contacts then drawContacts(g, world, viewport)
     if options.caption.nonEmpty then drawCaption(g, options.caption)
@@ -81,7 +88,8 @@ object Renderer:
       g.setColor(fill)
       g.fill(outlinePath)
       g.setColor(outline)
-      g.setStroke(BasicStroke(1f))
+      // An edge has no inside to fill: its line is drawn thicker.
+      g.setStroke(BasicStroke(if shape.isInstanceOf[Edge] then 2.5f else 1f))
       g.draw(outlinePath)
       shape match
         case circle: Circle =>
@@ -91,13 +99,15 @@ object Renderer:
         case _ => ()
     }
 
-  /** The outline of a shape in pixels: circles and convex polygons; any other shape type
-    * (a user's own) is shown by its bounding box.
+  /** The outline of a shape in pixels: circles, convex polygons, capsules and edges; any other
+    * shape type (a user's own) is shown by its bounding box.
     */
   private def shapePath(shape: Shape, viewport: Viewport): java.awt.Shape = shape match
     case circle: Circle =>
       val r = circle.radius * viewport.scale
       Ellipse2D.Double(viewport.pixelX(circle.pos.x) - r, viewport.pixelY(circle.pos.y) - r, 2 * r, 2 * r)
+    case edge: Edge => line(edge.vertex1, edge.vertex2, viewport)
+    case capsule: RoundedSegment => capsulePath(capsule, viewport)
     case polygon: ConvexPolygon =>
       val path = Path2D.Double()
       val vertices = polygon.vertices
@@ -106,6 +116,34 @@ object Renderer:
       path.closePath()
       path
     case other => boxPath(other, viewport)
+
+  /** A capsule's outline: a half circle around each end of its core, joined by its sides. */
+  private def capsulePath(capsule: RoundedSegment, viewport: Viewport): Path2D =
+    val path = Path2D.Double()
+    val (start, end) = (capsule.vertex1, capsule.vertex2)
+    val direction = math.atan2(end.y - start.y, end.x - start.x)
+    val steps = 12 // per half circle
+    for (centre, from) <- Seq((end, direction - math.Pi / 2), (start, direction + math.Pi / 2)); k <- 0 to steps do
+      val angle = from + math.Pi * k / steps
+      val p = centre + Vector2D(math.cos(angle), math.sin(angle)) * capsule.radius
+      if centre == end && k == 0 then path.moveTo(viewport.pixelX(p.x), viewport.pixelY(p.y))
+      else path.lineTo(viewport.pixelX(p.x), viewport.pixelY(p.y))
+    path.closePath()
+    path
+
+  /** A scene's overlay: its boxes and highlighted shapes' outlines, then its lines. */
+  private def drawOverlay(g: Graphics2D, overlay: Overlay, viewport: Viewport): Unit =
+    g.setColor(HighlightColour)
+    g.setStroke(BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, Array(6f, 4f), 0f))
+    for box <- overlay.boxes do
+      val left = viewport.pixelX(box.minVertex.x)
+      val top = viewport.pixelY(box.maxVertex.y)
+      g.draw(Rectangle2D.Double(left, top, viewport.pixelX(box.maxVertex.x) - left, viewport.pixelY(box.minVertex.y) - top))
+    g.setStroke(BasicStroke(3f))
+    overlay.highlighted.foreach(shape => g.draw(shapePath(shape, viewport)))
+    g.setColor(LineColour)
+    g.setStroke(BasicStroke(2f))
+    overlay.lines.foreach(segment => g.draw(line(segment.vertex1, segment.vertex2, viewport)))
 
   private def boxPath(shape: Shape, viewport: Viewport): Rectangle2D =
     val box = shape.AABB

@@ -117,7 +117,7 @@ final class SimulationPanel(initialScene: Scene, initialSolver: SolverChoice = S
     val height = math.max(1, getHeight)
     if _viewport.width != width || _viewport.height != height then
       _viewport = if viewMoved then _viewport.resized(width, height) else Viewport.fit(_scene.view, width, height)
-    Renderer.draw(graphics.asInstanceOf[Graphics2D], _staged.world, _viewport, renderOptions)
+    Renderer.draw(graphics.asInstanceOf[Graphics2D], _staged.world, _viewport, renderOptions, _staged.overlay())
 
   /** Zooms by `factor` about pixel (x, y). */
   def zoom(factor: Double, x: Double, y: Double): Unit =
@@ -142,7 +142,8 @@ final class SimulationPanel(initialScene: Scene, initialSolver: SolverChoice = S
     release()
     val point = _viewport.toWorld(x, y)
     val world = _staged.world
-    world.bodies.reverseIterator.find(b => !b.fixed && b.contains(point)) match
+    // The last free body joined (drawn on top) among the shapes under the pointer.
+    world.shapesAt(point).reverseIterator.map(_.body).find(!_.fixed) match
       case Some(body) =>
         val joint = MouseJoint(body, point, SimulationPanel.DragForcePerKilogram * body.mass)
         world += joint

@@ -3,7 +3,7 @@ package sims.examples.render
 import java.awt.Color
 import java.awt.image.BufferedImage
 import org.scalatest.funsuite.AnyFunSuite
-import sims.dynamics.World
+import sims.dynamics.{Capsule, Edge, World}
 import sims.scenes.{Region, Scene}
 import sims.geometry.Vector2D
 
@@ -81,6 +81,30 @@ class RendererSpec extends AnyFunSuite:
     val image = Renderer.image(world, viewport, RenderOptions(boxes = true))
     val onBox = colourAt(image, 1, 3.5)
     assert(onBox != Renderer.Background && colourAt(Renderer.image(world, viewport), 1, 3.5) == Renderer.Background)
+
+  test("capsules are drawn round-ended, edges as thick lines"):
+    val world = World()
+    val pill = Capsule(1.5, 1, 1)
+    pill.pos = Vector2D(0, 2)
+    world += pill.asBody
+    world += Edge(Vector2D(-4, -2), Vector2D(4, -2)).asBody
+    val image = Renderer.image(world, viewport, RenderOptions(smooth = false))
+    assert(colourAt(image, 2.2, 2.2) == Renderer.Palette(0), "in the right round end")
+    assert(colourAt(image, 2.4, 2.9) == Renderer.Background, "beyond the round end, inside the bounding box")
+    assert(colourAt(image, -1, 2.9) == Renderer.Palette(0), "along the side")
+    assert(colourAt(image, 0, -2) == Renderer.FixedFill.darker(), "on the edge")
+    assert(colourAt(image, 0, -2.3) == Renderer.Background, "below the edge")
+
+  test("a scene's overlay: lines, highlighted shapes and boxes"):
+    val world = knownWorld()
+    val ball = world.bodies(1).shapes.head
+    val overlay = sims.scenes.Overlay(lines = Seq(sims.geometry.Segment(Vector2D(-4, 2), Vector2D(-1, 2))),
+      highlighted = Set(ball), boxes = Seq(sims.geometry.AABB(Vector2D(-4, -4), Vector2D(-2, -3))))
+    val image = Renderer.image(world, viewport, RenderOptions(smooth = false), overlay)
+    assert(colourAt(image, -2.5, 2) == Renderer.LineColour, "on the line")
+    assert(colourAt(image, 3, 3) == Renderer.HighlightColour, "on the ball's outline")
+    assert(colourAt(image, -3.9, -3) == Renderer.HighlightColour, "on the box's top, where its dashes start")
+    assert(colourAt(Renderer.image(world, viewport, RenderOptions(smooth = false)), -2.5, 2) == Renderer.Background)
 
   test("every scene renders without error at its own view"):
     for scene <- sims.scenes.Scenes.all do

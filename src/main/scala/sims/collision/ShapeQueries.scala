@@ -1,0 +1,94 @@
+package sims.collision
+
+import scala.collection.mutable.ArrayBuffer
+import sims.Defaults
+import sims.collision.broadphase.{Broadphase, UniformGrid}
+import sims.dynamics.{Shape, World}
+import sims.geometry.{RayMath, Vector2D}
+
+/** The world's queries (`World.rayCast`, `rayCastAll`, `query`, `shapesAt`) through a grid
+  * broadphase of its own over every shape (collidable or not), so a query looks at the shapes
+  * near its box or ray only. The grid takes the shapes' bounds again at the first query after
+  * anything moved (the world says when: `stale`), so queries see the current positions
+  * whenever they are made; between moves, queries reuse it.
+  */
+private[sims] final class ShapeQueries(world: World):
+  private val grid = UniformGrid()
+
+  /** Set by the world whenever a shape may have moved, joined or left since the grid was made. */
+  var stale: Boolean = true
+
+  private def fresh(): UniformGrid =
+    if stale then
+      grid.gridSide = world.detector match
+        case detector: GridDetector => detector.gridSide
+        case _ => Defaults.GridSide
+      grid.update(world.shapeBuffer, 0, 0, everyShape = true)
+      stale = false
+    grid
+
+  /** The nearest hit of the segment from `from` to `to` among the shapes `filter` accepts. */
+  def rayCast(from: Vector2D, to: Vector2D, filter: Shape => Boolean): Option[RayHit] =
+    val nearest = Nearest(from, to, filter)
+    fresh().rayCast(from.x, from.y, to.x, to.y, nearest)
+    nearest.result
+
+  /** Every hit of the segment, nearest first (on equal fractions, in world order). */
+  def rayCastAll(from: Vector2D, to: Vector2D, filter: Shape => Boolean): IndexedSeq[RayHit] =
+    val all = All(from, to, filter)
+    fresh().rayCast(from.x, from.y, to.x, to.y, all)
+    all.hits.sortBy(h => (h.fraction, h.shape.worldIndex)).toIndexedSeq
+
+  /** The shapes whose bounds overlap the box, in world order. */
+  def query(minX: Double, minY: Double, maxX: Double, maxY: Double, filter: Shape => Boolean): IndexedSeq[Shape] =
+    val found = ArrayBuffer.empty[Shape]
+    fresh().query(minX, minY, maxX, maxY, found)
+    found.filter(filter).toIndexedSeq
+
+  /** The shapes that contain the point, in world order. */
+  def shapesAt(point: Vector2D, filter: Shape => Boolean): IndexedSeq[Shape] =
+    query(point.x, point.y, point.x, point.y, s => s.contains(point) && filter(s))
+
+  /** Casts the ray against one shape: its own `rayCast` if its class has one, else the
+    * library's.
+    */
+  private abstract class Caster(from: Vector2D, to: Vector2D, filter: Shape => Boolean) extends Broadphase.RayVisitor:
+    private val dx = to.x - from.x
+    private val dy = to.y - from.y
+    protected val hit = RayMath.Hit()
+
+    /** True if the ray enters `shape` at a fraction at most `limit` (then in `hit`). */
+    protected def cast(shape: Shape, limit: Double): Boolean =
+      if !filter(shape) then false
+      else if Shape.castsItself(shape) then
+        shape.rayCast(from, to) match
+          case Some(own) if own.fraction >= 0 && own.fraction <= limit =>
+            hit.fraction = own.fraction
+            hit.normalX = own.normal.x
+            hit.normalY = own.normal.y
+            true
+          case _ => false
+      else shape.castRay(from.x, from.y, dx, dy, limit, hit)
+
+    /** The hit in `hit` on `shape` as a result. */
+    protected def toHit(shape: Shape): RayHit =
+      RayHit(shape, Vector2D(from.x + hit.fraction * dx, from.y + hit.fraction * dy),
+        Vector2D(hit.normalX, hit.normalY), hit.fraction)
+
+  /** Keeps the nearest hit (on equal fractions, the shape first in world order). */
+  private final class Nearest(from: Vector2D, to: Vector2D, filter: Shape => Boolean)
+      extends Caster(from, to, filter):
+    var result: Option[RayHit] = None
+    def visit(shape: Shape, limit: Double): Double =
+      // `cast` finds hits up to `limit`, the nearest so far: a tie goes to the earlier shape.
+      if cast(shape, limit) && result.forall(r => hit.fraction < r.fraction || shape.worldIndex < r.shape.worldIndex) then
+        result = Some(toHit(shape))
+        hit.fraction
+      else limit
+
+  /** Keeps every hit. */
+  private final class All(from: Vector2D, to: Vector2D, filter: Shape => Boolean) extends Caster(from, to, filter):
+    val hits = ArrayBuffer.empty[RayHit]
+    def visit(shape: Shape, limit: Double): Double =
+      if cast(shape, limit) then hits += toHit(shape)
+      limit
