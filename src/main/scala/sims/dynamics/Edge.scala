@@ -12,7 +12,11 @@ import sims.geometry.Vector2D
   *
   * (Named so as not to clash with the geometry's [[sims.geometry.Segment]].)
   */
-final class Edge(start: Vector2D, end: Vector2D) extends RoundedSegment:
+final class Edge(
+    /** Where the edge began when it was made (world coordinates). */
+    val start: Vector2D,
+    /** Where the edge ended when it was made (world coordinates). */
+    val end: Vector2D) extends RoundedSegment:
   Vector2D.requireFinite("start", start)
   Vector2D.requireFinite("end", end)
   if start == end then throw IllegalArgumentException(s"end must differ from start, got $end for both")

@@ -7,6 +7,9 @@ private[io] object Tags:
   val CircleShape = 0
   val RectangleShape = 1
   val RegularPolygonShape = 2
+  val CapsuleShape = 3
+  val EdgeShape = 4
+  val HullPolygonShape = 5
   val DistanceJointTag = 0
   val SpringJointTag = 1
   val RevoluteJointTag = 2

@@ -10,20 +10,24 @@ import sims.dynamics.World
   *   1. the magic bytes "SIMS" and the format version (an Int, [[FormatVersion]]);
   *   2. settings: time step, iterations, gravity, the two flags, time, the grid detector's cell
   *      side and pair limit, the solver (ClassicStep, or SoftStep with all its parameters);
-  *   3. bodies in order: each shape (Circle, Rectangle or RegularPolygon with its arguments and
-  *      material, collidable, placement), the body's frame (mass, inertia, the shapes' offsets)
+  *   3. bodies in order: each shape (Circle, Rectangle, RegularPolygon, Capsule, Edge or
+  *      HullPolygon with its arguments and material, collidable, placement, filter bits), the
+  *      body's frame (mass, inertia, the shapes' offsets)
   *      and state (placement, velocities, force, torque, fixed); then each shape's transient
   *      shapes, by index;
   *   4. joints in order (Distance, Spring, Revolute, Prismatic, Mouse): bodies by index, the
-  *      anchors and body placements they were made from, their settings and soft-step impulses;
+  *      anchors and body placements they were made from, their settings, soft-step impulses
+  *      and `collideConnected`;
   *   5. the soft step's contact table (the last step's contacts with their impulses), if the
   *      world has stepped with the soft step.
   * A world's own subclass (its `postStep`), user shape, joint, detector or solver types are not
   * saved: `save` names the type it cannot write.
   */
 object WorldCodec:
-  /** The version of the format `save` writes; `load` reads this one. */
-  val FormatVersion: Int = 1
+  /** The version of the format `save` writes; `load` reads this one and every earlier one
+    * (version 1 had no capsules, edges, hull polygons, filter bits or `collideConnected`).
+    */
+  val FormatVersion: Int = 2
 
   /** The bytes of `world`'s state; fails with an IllegalArgumentException naming a type it cannot
     * save.
@@ -31,7 +35,7 @@ object WorldCodec:
   def save(world: World): Array[Byte] = WorldWriter.write(world)
 
   /** A new `World()` with the state in `bytes`; fails with an IllegalArgumentException if they are
-    * not a saved world of this format version.
+    * not a saved world of this format version or an earlier one.
     */
   def load(bytes: Array[Byte]): World = load(bytes, World())
 

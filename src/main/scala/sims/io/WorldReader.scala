@@ -2,7 +2,7 @@ package sims.io
 
 import java.io.{ByteArrayInputStream, DataInputStream, EOFException}
 import sims.collision.GridDetector
-import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.geometry.Vector2D
 import sims.solver.{ClassicStep, SoftStep}
@@ -22,15 +22,15 @@ private[io] object WorldReader:
     try
       if in.readInt() != WorldCodec.Magic then throw IllegalArgumentException("these bytes are not a saved SiMS world")
       val version = in.readInt()
-      if version != WorldCodec.FormatVersion then
-        throw IllegalArgumentException(s"a saved world of format version $version; this library reads version " +
-          s"${WorldCodec.FormatVersion}")
+      if version < 1 || version > WorldCodec.FormatVersion then
+        throw IllegalArgumentException(s"a saved world of format version $version; this library reads versions " +
+          s"1 to ${WorldCodec.FormatVersion}")
       settings(in, world)
-      val bodies = IndexedSeq.fill(in.readInt())(body(in))
+      val bodies = IndexedSeq.fill(in.readInt())(body(in, version))
       bodies.foreach(world += _)
       val shapes = world.shapes
       for s <- shapes do s.transientShapes = Seq.fill(in.readInt())(shapes(in.readInt())).toSet
-      for _ <- 0 until in.readInt() do world += joint(in, bodies)
+      for _ <- 0 until in.readInt() do world += joint(in, bodies, version)
       if in.readBoolean() then contacts(in, world)
       if in.available() != 0 then throw IllegalArgumentException(s"${in.available()} bytes after the saved world")
       world
@@ -59,13 +59,13 @@ private[io] object WorldReader:
         SoftStep(substeps, d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7), d(8), d(9), d(10), in.readBoolean())
       case tag => throw IllegalArgumentException(s"unknown solver tag $tag in the saved world")
 
-  private def body(in: DataInputStream): Body =
+  private def body(in: DataInputStream, version: Int): Body =
     val count = in.readInt()
     val shapes = new Array[Shape](count)
     val frame = new Array[Double](3 * count)
     val placements = new Array[Double](3 * count)
     for i <- 0 until count do
-      val s = shape(in)
+      val s = shape(in, version)
       shapes(i) = s
       placements(3 * i) = s.x; placements(3 * i + 1) = s.y; placements(3 * i + 2) = s.angle
       frame(3 * i) = in.readDouble(); frame(3 * i + 1) = in.readDouble(); frame(3 * i + 2) = in.readDouble()
@@ -88,7 +88,8 @@ private[io] object WorldReader:
     b.vx = vx; b.vy = vy; b.w = w
     b
 
-  private def shape(in: DataInputStream): Shape =
+  /** A shape; version 1 knew circles, rectangles and regular polygons only, and no filter bits. */
+  private def shape(in: DataInputStream, version: Int): Shape =
     val s = in.readByte() match
       case CircleShape =>
         val radius = in.readDouble()
@@ -99,14 +100,28 @@ private[io] object WorldReader:
       case RegularPolygonShape =>
         val (n, radius) = (in.readInt(), in.readDouble())
         RegularPolygon(n, radius, in.readDouble())
+      case CapsuleShape if version >= 2 =>
+        val (halfLength, radius) = (in.readDouble(), in.readDouble())
+        Capsule(halfLength, radius, in.readDouble())
+      case EdgeShape if version >= 2 =>
+        val edge = Edge(Vector2D(in.readDouble(), in.readDouble()), Vector2D(in.readDouble(), in.readDouble()))
+        in.readDouble() // its density, always 0
+        edge
+      case HullPolygonShape if version >= 2 =>
+        val points = IndexedSeq.fill(in.readInt())(Vector2D(in.readDouble(), in.readDouble()))
+        HullPolygon(points, in.readDouble())
       case tag => throw IllegalArgumentException(s"unknown shape tag $tag in the saved world")
     s.restitution = in.readDouble()
     s.friction = in.readDouble()
     s.place(in.readDouble(), in.readDouble(), in.readDouble())
     s.collidable = in.readBoolean()
+    if version >= 2 then
+      s.categoryBits = in.readInt()
+      s.maskBits = in.readInt()
+      s.groupIndex = in.readInt()
     s
 
-  private def joint(in: DataInputStream, bodies: IndexedSeq[Body]): Joint =
+  private def joint(in: DataInputStream, bodies: IndexedSeq[Body], version: Int): Joint =
     val tag = in.readByte()
     val node1 = if tag == MouseJointTag then null else bodies(in.readInt())
     val node2 = bodies(in.readInt())
@@ -145,6 +160,7 @@ private[io] object WorldReader:
     if impulses != j.softImpulse.length then
       throw IllegalArgumentException(s"$j carries ${j.softImpulse.length} impulses, the saved world has $impulses")
     for i <- 0 until impulses do j.softImpulse(i) = in.readDouble()
+    if version >= 2 then j.collideConnected = in.readBoolean()
     j
 
   /** The soft step's committed contacts, keyed by the loaded shapes. */

@@ -2,7 +2,7 @@ package sims.io
 
 import java.io.{ByteArrayOutputStream, DataOutputStream}
 import sims.collision.GridDetector
-import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, JointOrigin, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.solver.{ClassicStep, SoftStep}
 import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
@@ -80,9 +80,26 @@ private[io] object WorldWriter:
         out.writeByte(RegularPolygonShape)
         out.writeInt(p.n)
         out.writeDouble(p.radius)
+      case c: Capsule =>
+        out.writeByte(CapsuleShape)
+        out.writeDouble(c.halfLength)
+        out.writeDouble(c.radius)
+      case e: Edge =>
+        out.writeByte(EdgeShape)
+        for d <- Seq(e.start.x, e.start.y, e.end.x, e.end.y) do out.writeDouble(d)
+      case h: HullPolygon =>
+        out.writeByte(HullPolygonShape)
+        // The points it was made from: the hull is found from them again, to the same bits.
+        out.writeInt(h.points.length)
+        for p <- h.points do
+          out.writeDouble(p.x)
+          out.writeDouble(p.y)
       case other => unsupported("shape", other)
     for d <- Seq(s.density, s.restitution, s.friction, s.x, s.y, s.angle) do out.writeDouble(d)
     out.writeBoolean(s.collidable)
+    out.writeInt(s.categoryBits)
+    out.writeInt(s.maskBits)
+    out.writeInt(s.groupIndex)
 
   private def joint(out: DataOutputStream, j: Joint, bodyIndex: Map[Body, Int]): Unit =
     def origin(o: JointOrigin): Unit =
@@ -111,6 +128,7 @@ private[io] object WorldWriter:
       case other => unsupported("joint", other)
     out.writeInt(j.softImpulse.length)
     j.softImpulse.foreach(out.writeDouble)
+    out.writeBoolean(j.collideConnected)
 
   /** The soft step's committed contacts, if the world has stepped with the soft step. */
   private def contacts(out: DataOutputStream, world: World, shapeIndex: Map[Shape, Int]): Unit =

@@ -9,10 +9,16 @@ import sims.dynamics.Shape
   * Everything it reports depends on the shapes' order and bounds only, never on hash codes.
   */
 private[sims] trait Broadphase:
-  /** Takes the current bounds of `shapes` (world order), each enlarged by `margin` on every
-    * side; shapes that are not collidable are left out, unless `everyShape` (for queries).
+  /** Takes the current bounds of the collidable `shapes` (world order), each enlarged by
+    * `margin` on every side.
     */
-  def update(shapes: Array[Shape], margin: Double, everyShape: Boolean = false): Unit
+  def update(shapes: Array[Shape], margin: Double): Unit
+
+  /** `update`, each shape's bounds also enlarged by how far its body can move in `sweep`
+    * seconds at its current speed; with `everyShape`, shapes that are not collidable are taken
+    * too (for queries).
+    */
+  def update(shapes: Array[Shape], margin: Double, sweep: Double, everyShape: Boolean): Unit
 
   /** Adds every candidate pair of the last `update` to `pairs` once (see [[sims.collision.PairFilter]]),
     * the shape that joined the world first being the pair's first shape.
