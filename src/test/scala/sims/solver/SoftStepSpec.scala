@@ -13,6 +13,7 @@ import sims.geometry.{AABB, Projection, Vector2D}
   * no energy gain, determinism, invariance) and its state in snapshots and failed steps.
   */
 class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
+  import SoftStepSpec.{Plate, PlateCollision}
   import SoftStepSpec.*
 
   // Shrinking would leave the generators' ranges (a density of 1e-4 makes the spring's
@@ -259,21 +260,6 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
   }
 
   test("user kinds work under the soft step: a shape with its own narrowphase, a detector, a joint") {
-    // A plate of a user kind, with the documented extension lists.
-    final class Plate(val level: Double) extends Shape:
-      val density = 1.0
-      val volume = 1.0
-      val I = 1.0
-      def AABB = new sims.geometry.AABB(Vector2D(-100, level - 0.1), Vector2D(100, level))
-      def project(axis: Vector2D) =
-        val ps = Seq(Vector2D(-100, level), Vector2D(100, level), Vector2D(-100, level - 0.1), Vector2D(100, level - 0.1)).map(_ dot axis)
-        Projection(axis, ps.min, ps.max)
-      def contains(point: Vector2D) = point.y <= level && point.y >= level - 0.1
-    final class PlateCollision(plate: Plate, circle: Circle) extends Collision:
-      val shape1: Shape = plate
-      val shape2: Shape = circle
-      val normal = Vector2D(0, 1)
-      val points = List(Vector2D(circle.pos.x, plate.level))
     val world = World()
     world.solver = SoftStep()
     val detector = world.detector.asInstanceOf[GridDetector]
@@ -384,3 +370,20 @@ object SoftStepSpec:
       mix(b.linearVelocity.x); mix(b.linearVelocity.y); mix(b.angularVelocity)
     mix(world.time)
     h
+
+  // A plate of a user's shape kind and its collision, for the extension test (here, not local
+  // to the test: a local class cannot be matched by type).
+  final class Plate(val level: Double) extends Shape:
+    val density = 1.0
+    val volume = 1.0
+    val I = 1.0
+    def AABB = new sims.geometry.AABB(Vector2D(-100, level - 0.1), Vector2D(100, level))
+    def project(axis: Vector2D) =
+      val ps = Seq(Vector2D(-100, level), Vector2D(100, level), Vector2D(-100, level - 0.1), Vector2D(100, level - 0.1)).map(_ dot axis)
+      Projection(axis, ps.min, ps.max)
+    def contains(point: Vector2D) = point.y <= level && point.y >= level - 0.1
+  final class PlateCollision(plate: Plate, circle: Circle) extends Collision:
+    val shape1: Shape = plate
+    val shape2: Shape = circle
+    val normal = Vector2D(0, 1)
+    val points = List(Vector2D(circle.pos.x, plate.level))
