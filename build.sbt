@@ -89,6 +89,9 @@ lazy val docs = (project in file("target/mdoc-project"))
     target := (ThisBuild / baseDirectory).value / "target" / "docs",
     mdocIn := (ThisBuild / baseDirectory).value / "docs",
     mdocOut := target.value / "mdoc",
+    // mdoc adds -deprecation and -unchecked itself; given twice, the compiler complains once
+    // per snippet ("Flag -unchecked set repeatedly"). Deprecations are still reported.
+    Compile / scalacOptions := Seq("-feature"),
     Test / test := mdoc.toTask("").value
   )
 
