@@ -66,7 +66,7 @@ private[sims] final class UniformGrid extends Broadphase:
   // The box around the bounds of the shapes in the fine grid: a ray's walk is clipped to it.
   private var fineMinX, fineMinY, fineMaxX, fineMaxY = 0.0
 
-  def update(shapes: Array[Shape], margin: Double): Unit = update(shapes, margin, 0, everyShape = false)
+  def update(shapes: Array[Shape], margin: Double, everyShape: Boolean): Unit = update(shapes, margin, 0, everyShape)
 
   /** `update`, each shape's bounds also enlarged by how far its body's points can move in
     * `sweep` seconds at their current speed (|v| + |w| extent): a solver that makes contacts
