@@ -10,7 +10,7 @@ import sims.dynamics.Shape
   */
 private[sims] trait Broadphase:
   /** Takes the current bounds of `shapes` (world order), each enlarged by `margin` on every
-    * side; shapes that are not collidable are left out, unless `everyShape` (for queries).
+    * side; shapes that are not collidable and sensors are left out, unless `everyShape` (for queries).
     */
   def update(shapes: Array[Shape], margin: Double, everyShape: Boolean = false): Unit
 
