@@ -1,5 +1,6 @@
 package sims.collision
 
+import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.Shape
 import sims.geometry.Vector2D
 
@@ -41,40 +42,48 @@ final case class ContactEnd(shape1: Shape, shape2: Shape)
   * apart, do not count until they push).
   *
   * The collections are the world's own and are refilled by the next step: read them in the
-  * post-step hook or after `step()`, and copy what you want to keep.
+  * post-step hook or after `step()`, and copy what you want to keep. Their objects are made when
+  * first read after a step: a world whose events nobody reads makes none.
   */
 final class ContactEvents private[sims] (tracker: PairTracker):
-  private val log = EventLog[ContactBegin, ContactEnd]()
+  // The events as objects, made from the tracker's arrays when first asked for after a step.
+  private val beginList = ArrayBuffer.empty[ContactBegin]
+  private val endList = ArrayBuffer.empty[ContactEnd]
+  private var made = -1L
 
   /** The pairs that began to touch in the last step. */
-  def begins: collection.IndexedSeq[ContactBegin] = log.shownBegins
+  def begins: collection.IndexedSeq[ContactBegin] =
+    make()
+    beginList
 
   /** The pairs that stopped touching in the last step. */
-  def ends: collection.IndexedSeq[ContactEnd] = log.shownEnds
+  def ends: collection.IndexedSeq[ContactEnd] =
+    make()
+    endList
 
   /** The pairs touching now (begun and not ended), in world order: (shape1, shape2) as in their
     * [[ContactBegin]].
     */
   def touching: IndexedSeq[(Shape, Shape)] =
-    tracker.openSorted().toIndexedSeq.map(i => (tracker.openFirstShape(i), tracker.openSecondShape(i)))
+    val pairs = tracker.openPairs()
+    IndexedSeq.tabulate(pairs.keys.length)(i => (pairs.first(i), pairs.second(i)))
 
-  /** Shows the tracker's events of the step just finished. */
-  private[sims] def publish(): Unit =
-    log.next()
-    var k = 0
-    while k < tracker.begins do
-      log.nextBegins += ContactBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k),
-        Vector2D(tracker.beginValue(k, PairTracker.NormalX), tracker.beginValue(k, PairTracker.NormalY)),
-        Vector2D(tracker.beginValue(k, PairTracker.PointX), tracker.beginValue(k, PairTracker.PointY)),
-        tracker.beginValue(k, PairTracker.ApproachSpeed), tracker.beginValue(k, PairTracker.NormalImpulse))
-      k += 1
-    k = 0
-    while k < tracker.ends do
-      log.nextEnds += ContactEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
-      k += 1
-    log.show()
+  /** Makes the event objects of the last step, unless made already. */
+  private def make(): Unit =
+    if made != tracker.generation then
+      beginList.clear()
+      endList.clear()
+      var k = 0
+      while k < tracker.begins do
+        beginList += ContactBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k),
+          Vector2D(tracker.beginValue(k, PairTracker.NormalX), tracker.beginValue(k, PairTracker.NormalY)),
+          Vector2D(tracker.beginValue(k, PairTracker.PointX), tracker.beginValue(k, PairTracker.PointY)),
+          tracker.beginValue(k, PairTracker.ApproachSpeed), tracker.beginValue(k, PairTracker.NormalImpulse))
+        k += 1
+      k = 0
+      while k < tracker.ends do
+        endList += ContactEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
+        k += 1
+      made = tracker.generation
 
-  /** The log of shown events (the world starts, undoes and clears it with the step). */
-  private[sims] def shown: EventLog[ContactBegin, ContactEnd] = log
-
-  override def toString: String = s"ContactEvents(${begins.size} begins, ${ends.size} ends)"
+  override def toString: String = s"ContactEvents(${tracker.begins} begins, ${tracker.ends} ends)"

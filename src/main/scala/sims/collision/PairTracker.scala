@@ -4,82 +4,48 @@ import sims.Defaults
 import sims.dynamics.{Shape, World}
 
 /** Which pairs of shapes touch (or, for sensors, overlap) from step to step, and the begins and
-  * ends of one step: the bookkeeping behind [[ContactEvents]] and [[SensorEvents]].
+  * ends of each step: the bookkeeping behind [[ContactEvents]] and [[SensorEvents]].
   *
   * A pair is identified by its two shapes' `worldIndex`es (the order they joined the world:
   * never reused, unchanged when other bodies leave), packed into a Long key. For contacts the
   * earlier shape comes first; for sensors (`ordered`) the sensor comes first. The pairs that
-  * have begun and not ended are the open pairs. During a step the solver (or the sensor stage)
-  * calls `touch` for every pair touching now; `finishStep` then ends every open pair that was
-  * not touched, unless it may stay open (contacts only, see `keeps`), and makes the new pairs
-  * open. Every begin is thus followed by exactly one end: a pair that stops touching, whose
-  * shape leaves the world, stops colliding (`collidable`, filter bits, a sensor flag, a joint's
+  * have begun and not ended are the open pairs, kept in a [[PairTable]]. During a step the solver
+  * (or the sensor stage) calls `touch` for every pair touching now: an open pair is stamped, a new
+  * one opened at once and recorded as a begin. `finishStep` then scans the open pairs and ends
+  * every one not stamped this step, unless it may stay open (contacts only, see `keeps`). Every
+  * begin is thus followed by exactly one end: a pair that stops touching, whose shape leaves the
+  * world, stops colliding (`collidable`, filter bits, a sensor flag, a joint's
   * `collideConnected`) or whose world stops detecting collisions ends at the next step, whichever
   * solver runs it.
   *
-  * Open pairs are found through a [[PairKeyMap]]; the events of a step are sorted by key, so
-  * their order is the shapes' world order, never a hash order. A step with no begin and no end
-  * changes nothing and allocates nothing.
+  * A step costs one probe per touching pair and a scan of the table; its begins and ends are
+  * kept as plain arrays, sorted by key (the shapes' world order, never a hash order) and turned
+  * into event objects only when someone reads them. The last step's are kept beside the ones
+  * being made, so that a failed step can be undone: its begins leave the table, its ends return.
   *
   * @param ordered whether the pair's order is given (sensor first), rather than by world order
   */
 private[sims] final class PairTracker(ordered: Boolean):
   import PairTracker.*
 
-  // The open pairs, and the generation before the last change (put back by `undoStep`).
-  private var openKeys = new Array[Long](16)
-  private var openFirst, openSecond = new Array[Shape](16)
-  private var openCount = 0
-  private var spareKeys = new Array[Long](16)
-  private var spareFirst, spareSecond = new Array[Shape](16)
-  private var spareCount = 0
-  private val openIndex = PairKeyMap()
-  // Per open pair: the step that last touched it.
-  private var touched = new Array[Int](16)
-  private var stamp = 0
-  // Whether this step's `finishStep` replaced the open pairs.
-  private var replaced = false
-
-  // This step's begins, in the order found, with what the solver told of each.
-  private var beginKeys = new Array[Long](16)
-  private var beginFirst, beginSecond = new Array[Shape](16)
-  private var beginData = new Array[Double](16 * DataStride)
-  private var beginCount = 0
-  private val beginIndex = PairKeyMap()
+  private val open = PairTable()
+  private var stamp = 0L
+  // The events of the step under way, and those of the last finished step (shown).
+  private var working = StepEvents()
+  private var shown = StepEvents()
+  // Whether this step's `finishStep` made `working` the shown events.
+  private var finished = false
   private var lastFlipped = false
-
-  // This step's ends.
-  private var endKeys = new Array[Long](16)
-  private var endFirst, endSecond = new Array[Shape](16)
-  private var endCount = 0
-
-  // The events' order: positions sorted by key.
-  private var beginOrder, endOrder, scratch = new Array[Int](16)
-
   private val separation = ShapeSeparation()
 
-  /** Number of open pairs. */
-  def openPairs: Int = openCount
-
-  /** The first shape of open pair i (in no particular order; see `openSorted`). */
-  def openFirstShape(i: Int): Shape = openFirst(i)
-
-  /** The second shape of open pair i. */
-  def openSecondShape(i: Int): Shape = openSecond(i)
-
-  /** The open pairs' positions, sorted by key. */
-  def openSorted(): Array[Int] =
-    val order = Array.tabulate(openCount)(identity)
-    sortByKey(order, openKeys, openCount, new Array[Int](openCount))
-    order
+  /** Counts the changes of the shown events (steps finished, undone, restored). */
+  var generation: Long = 0
 
   /** Starts a step: no pair touched yet, no begins, no ends. */
   def beginStep(): Unit =
     stamp += 1
-    beginCount = 0
-    beginIndex.clear()
-    endCount = 0
-    replaced = false
+    working.clear()
+    finished = false
 
   /** Reports that shapes `a` and `b` touch now; true if that begins their pair (it was not open
     * and not reported yet this step): the caller then describes it with `describe`.
@@ -89,19 +55,13 @@ private[sims] final class PairTracker(ordered: Boolean):
     val first = if lastFlipped then b else a
     val second = if lastFlipped then a else b
     val key = keyOf(first, second)
-    val open = openIndex.get(key)
-    if open >= 0 then
-      touched(open) = stamp
+    val slot = open.find(key)
+    if slot >= 0 then
+      open.stamp(slot, stamp)
       false
-    else if beginIndex.get(key) >= 0 then false
     else
-      if beginCount == beginKeys.length then growBegins()
-      beginKeys(beginCount) = key
-      beginFirst(beginCount) = first
-      beginSecond(beginCount) = second
-      java.util.Arrays.fill(beginData, beginCount * DataStride, (beginCount + 1) * DataStride, 0.0)
-      beginIndex.put(key, beginCount)
-      beginCount += 1
+      open.insert(key, first, second, stamp)
+      working.addBegin(key, first, second)
       true
 
   /** Describes the pair `touch` just began: the unit normal (nx, ny) from `touch`'s `a` towards
@@ -109,163 +69,109 @@ private[sims] final class PairTracker(ordered: Boolean):
     * normal impulse.
     */
   def describe(nx: Double, ny: Double, px: Double, py: Double, approachSpeed: Double, normalImpulse: Double): Unit =
-    val k = (beginCount - 1) * DataStride
     val sign = if lastFlipped then -1.0 else 1.0
-    beginData(k + NormalX) = sign * nx
-    beginData(k + NormalY) = sign * ny
-    beginData(k + PointX) = px
-    beginData(k + PointY) = py
-    beginData(k + ApproachSpeed) = approachSpeed
-    beginData(k + NormalImpulse) = normalImpulse
+    working.describeLast(sign * nx, sign * ny, px, py, approachSpeed, normalImpulse)
 
   /** Ends the step of `world`: every open pair not touched ends unless `keeps` says it may stay
-    * open; the pairs begun become open. Sorts this step's begins and ends by key.
+    * open. Sorts the step's begins and ends by key and shows them.
     */
   def finishStep(world: World): Unit =
-    var i = 0
-    while i < openCount do
-      if touched(i) != stamp then
-        if keeps(i, world) then touched(i) = stamp else addEnd(i)
-      i += 1
-    if endCount > 0 || beginCount > 0 then replaceOpen()
-    sortEvents()
+    var slot = 0
+    val slots = open.slots
+    while slot < slots do
+      if open.keyAt(slot) >= 0 && open.stampAt(slot) != stamp then
+        if keeps(open.firstAt(slot), open.secondAt(slot), open.keyAt(slot), world) then open.stamp(slot, stamp)
+        else
+          working.addEnd(open.keyAt(slot), open.firstAt(slot), open.secondAt(slot))
+          open.remove(slot)
+      slot += 1
+    show()
+    finished = true
 
-  /** Whether open pair i, not touched this step, stays open: a contact pair (never a sensor
+  /** Whether an open pair not touched this step stays open: a contact pair (never a sensor
     * pair) whose shapes are still in `world` and may still collide there, and are at most
     * [[Defaults.ContactHysteresis]] apart. A pair of shapes resting on each other may lose its
     * contact for a step (the classic step's bounce of a few micrometres, the soft step's point
     * a hair above the surface); it does not end and begin again for that.
     */
-  private def keeps(i: Int, world: World): Boolean =
-    if ordered then false
-    else
-      val first = openFirst(i)
-      val second = openSecond(i)
-      val key = openKeys(i)
-      inWorld(first, (key >>> 32).toInt, world) && inWorld(second, key.toInt, world) &&
-        world.enableCollisionDetection && PairFilter.accepts(first, second) &&
-        separation.measure(first, second) && separation.distance <= Defaults.ContactHysteresis
+  private def keeps(first: Shape, second: Shape, key: Long, world: World): Boolean =
+    !ordered && inWorld(first, (key >>> 32).toInt, world) && inWorld(second, key.toInt, world) &&
+      world.enableCollisionDetection && PairFilter.accepts(first, second) &&
+      separation.measure(first, second) && separation.distance <= Defaults.ContactHysteresis
 
-  private def addEnd(i: Int): Unit =
-    if endCount == endKeys.length then
-      val capacity = 2 * endCount
-      endKeys = java.util.Arrays.copyOf(endKeys, capacity)
-      endFirst = java.util.Arrays.copyOf(endFirst, capacity)
-      endSecond = java.util.Arrays.copyOf(endSecond, capacity)
-    endKeys(endCount) = openKeys(i)
-    endFirst(endCount) = openFirst(i)
-    endSecond(endCount) = openSecond(i)
-    endCount += 1
+  private def show(): Unit =
+    val events = working
+    working = shown
+    shown = events
+    generation += 1
 
-  /** The open pairs that stay (touched or kept), then the begun ones, into the spare
-    * generation, which becomes the open one.
-    */
-  private def replaceOpen(): Unit =
-    val needed = openCount + beginCount
-    if spareKeys.length < needed then
-      val capacity = math.max(needed, 2 * spareKeys.length)
-      spareKeys = new Array[Long](capacity)
-      spareFirst = new Array[Shape](capacity)
-      spareSecond = new Array[Shape](capacity)
-    var n = 0
-    var i = 0
-    while i < openCount do
-      if touched(i) == stamp then // touched or kept: stays open
-        spareKeys(n) = openKeys(i)
-        spareFirst(n) = openFirst(i)
-        spareSecond(n) = openSecond(i)
-        n += 1
-      i += 1
-    i = 0
-    while i < beginCount do
-      spareKeys(n) = beginKeys(i)
-      spareFirst(n) = beginFirst(i)
-      spareSecond(n) = beginSecond(i)
-      n += 1
-      i += 1
-    spareCount = n
-    swap()
-    // The generation left behind keeps its shapes for `undoStep` until the next change.
-    replaced = true
-
-  private def swap(): Unit =
-    val (keys, first, second, count) = (openKeys, openFirst, openSecond, openCount)
-    openKeys = spareKeys; openFirst = spareFirst; openSecond = spareSecond; openCount = spareCount
-    spareKeys = keys; spareFirst = first; spareSecond = second; spareCount = count
-    if touched.length < openKeys.length then touched = new Array[Int](openKeys.length)
-    indexOpen()
-
-  private def indexOpen(): Unit =
-    openIndex.clear()
-    var i = 0
-    while i < openCount do
-      openIndex.put(openKeys(i), i)
-      touched(i) = 0
-      i += 1
-
-  /** Puts back the open pairs as they were before this step (the step failed after
-    * `finishStep`); the step's begins and ends are then forgotten by the next `beginStep`.
+  /** Puts the open pairs back as they were before this step (the step failed): its begins leave,
+    * its ends come back, and the last step's events are shown again.
     */
   def undoStep(): Unit =
-    if replaced then
-      swap()
-      replaced = false
-
-  /** A copy of the open pairs, for a snapshot of the world. */
-  def copyOpen(): PairTracker.Saved =
-    PairTracker.Saved(java.util.Arrays.copyOf(openKeys, openCount), java.util.Arrays.copyOf(openFirst, openCount),
-      java.util.Arrays.copyOf(openSecond, openCount))
-
-  /** Makes the pairs of a copy taken by `copyOpen` the open ones; this step's events are forgotten. */
-  def restoreOpen(saved: PairTracker.Saved): Unit =
-    val n = saved.keys.length
-    if openKeys.length < n then
-      openKeys = new Array[Long](n); openFirst = new Array[Shape](n); openSecond = new Array[Shape](n)
-      touched = new Array[Int](n)
-    System.arraycopy(saved.keys, 0, openKeys, 0, n)
-    System.arraycopy(saved.first, 0, openFirst, 0, n)
-    System.arraycopy(saved.second, 0, openSecond, 0, n)
-    java.util.Arrays.fill(openFirst.asInstanceOf[Array[AnyRef]], n, openFirst.length, null)
-    java.util.Arrays.fill(openSecond.asInstanceOf[Array[AnyRef]], n, openSecond.length, null)
-    openCount = n
-    indexOpen()
-    beginStep()
-    replaced = false
-
-  // ---- This step's events, sorted by key (after `finishStep`).
-
-  /** Number of pairs begun this step. */
-  def begins: Int = beginCount
-  /** The first shape of the k-th begin. */
-  def beginFirstShape(k: Int): Shape = beginFirst(beginOrder(k))
-  /** The second shape of the k-th begin. */
-  def beginSecondShape(k: Int): Shape = beginSecond(beginOrder(k))
-  /** One of the values `describe` gave the k-th begin (`NormalX` ... `NormalImpulse`). */
-  def beginValue(k: Int, field: Int): Double = beginData(beginOrder(k) * DataStride + field)
-  /** Number of pairs ended this step. */
-  def ends: Int = endCount
-  /** The first shape of the k-th end. */
-  def endFirstShape(k: Int): Shape = endFirst(endOrder(k))
-  /** The second shape of the k-th end. */
-  def endSecondShape(k: Int): Shape = endSecond(endOrder(k))
-
-  private def sortEvents(): Unit =
-    val needed = math.max(beginCount, endCount)
-    if beginOrder.length < needed then
-      beginOrder = new Array[Int](needed); endOrder = new Array[Int](needed); scratch = new Array[Int](needed)
+    val step = if finished then shown else working
     var i = 0
-    while i < beginCount do { beginOrder(i) = i; i += 1 }
+    while i < step.beginCount do
+      val slot = open.find(step.beginKeys(i))
+      if slot >= 0 then open.remove(slot)
+      i += 1
     i = 0
-    while i < endCount do { endOrder(i) = i; i += 1 }
-    sortByKey(beginOrder, beginKeys, beginCount, scratch)
-    sortByKey(endOrder, endKeys, endCount, scratch)
+    while i < step.endCount do
+      if open.find(step.endKeys(i)) < 0 then open.insert(step.endKeys(i), step.endFirst(i), step.endSecond(i), 0)
+      i += 1
+    step.clear()
+    if finished then
+      show()
+      finished = false
 
-  private def growBegins(): Unit =
-    val capacity = 2 * beginCount
-    beginKeys = java.util.Arrays.copyOf(beginKeys, capacity)
-    beginFirst = java.util.Arrays.copyOf(beginFirst, capacity)
-    beginSecond = java.util.Arrays.copyOf(beginSecond, capacity)
-    beginData = java.util.Arrays.copyOf(beginData, capacity * DataStride)
+  /** The open pairs, sorted by key: their keys, first and second shapes. */
+  def openPairs(): PairTracker.Saved =
+    val keys = new Array[Long](open.size)
+    val slotsOf = new Array[Int](open.size)
+    var n = 0
+    var slot = 0
+    while slot < open.slots do
+      if open.keyAt(slot) >= 0 then
+        keys(n) = open.keyAt(slot)
+        slotsOf(n) = slot
+        n += 1
+      slot += 1
+    val order = Array.tabulate(n)(identity)
+    sortByKey(order, keys, n, new Array[Int](n))
+    PairTracker.Saved(order.map(keys), order.map(i => open.firstAt(slotsOf(i))), order.map(i => open.secondAt(slotsOf(i))))
+
+  /** Makes the pairs of a copy taken by `openPairs` the open ones, with no events shown. */
+  def restoreOpen(saved: PairTracker.Saved): Unit =
+    open.clear()
+    var i = 0
+    while i < saved.keys.length do
+      open.insert(saved.keys(i), saved.first(i), saved.second(i), 0)
+      i += 1
+    working.clear()
+    shown.clear()
+    finished = false
+    generation += 1
+
+  // ---- The events shown (the last finished step's), sorted by key when first asked for.
+
+  /** Number of pairs begun in the last step. */
+  def begins: Int =
+    shown.sort()
+    shown.beginCount
+  /** The first shape of the k-th begin. */
+  def beginFirstShape(k: Int): Shape = { shown.sort(); shown.beginFirst(shown.beginOrder(k)) }
+  /** The second shape of the k-th begin. */
+  def beginSecondShape(k: Int): Shape = { shown.sort(); shown.beginSecond(shown.beginOrder(k)) }
+  /** One of the values `describe` gave the k-th begin (`NormalX` ... `NormalImpulse`). */
+  def beginValue(k: Int, field: Int): Double = { shown.sort(); shown.beginData(shown.beginOrder(k) * DataStride + field) }
+  /** Number of pairs ended in the last step. */
+  def ends: Int =
+    shown.sort()
+    shown.endCount
+  /** The first shape of the k-th end. */
+  def endFirstShape(k: Int): Shape = { shown.sort(); shown.endFirst(shown.endOrder(k)) }
+  /** The second shape of the k-th end. */
+  def endSecondShape(k: Int): Shape = { shown.sort(); shown.endSecond(shown.endOrder(k)) }
 
 private[sims] object PairTracker:
   // The values `describe` keeps per begin.
@@ -277,7 +183,7 @@ private[sims] object PairTracker:
   inline val NormalImpulse = 5
   private inline val DataStride = 6
 
-  /** A copy of a tracker's open pairs (see `copyOpen`). */
+  /** Open pairs sorted by key (see `openPairs`): a snapshot's copy, or the pairs touching now. */
   final class Saved(val keys: Array[Long], val first: Array[Shape], val second: Array[Shape])
 
   /** The key of the pair (first, second): their join orders, the first's in the high half. */
@@ -289,6 +195,75 @@ private[sims] object PairTracker:
     */
   private def inWorld(shape: Shape, index: Int, world: World): Boolean =
     shape.body != null && (shape.body.world eq world) && shape.worldIndex == index
+
+  /** The begins and ends of one step, in plain arrays reused from step to step. */
+  private final class StepEvents:
+    var beginKeys = new Array[Long](16)
+    var beginFirst, beginSecond = new Array[Shape](16)
+    var beginData = new Array[Double](16 * DataStride)
+    var beginCount = 0
+    var endKeys = new Array[Long](16)
+    var endFirst, endSecond = new Array[Shape](16)
+    var endCount = 0
+    var beginOrder, endOrder, scratch = new Array[Int](16)
+    private var sorted = true
+
+    def clear(): Unit =
+      sorted = true
+      java.util.Arrays.fill(beginFirst.asInstanceOf[Array[AnyRef]], 0, beginCount, null)
+      java.util.Arrays.fill(beginSecond.asInstanceOf[Array[AnyRef]], 0, beginCount, null)
+      java.util.Arrays.fill(endFirst.asInstanceOf[Array[AnyRef]], 0, endCount, null)
+      java.util.Arrays.fill(endSecond.asInstanceOf[Array[AnyRef]], 0, endCount, null)
+      beginCount = 0
+      endCount = 0
+
+    def addBegin(key: Long, first: Shape, second: Shape): Unit =
+      if beginCount == beginKeys.length then
+        val capacity = 2 * beginCount
+        beginKeys = java.util.Arrays.copyOf(beginKeys, capacity)
+        beginFirst = java.util.Arrays.copyOf(beginFirst, capacity)
+        beginSecond = java.util.Arrays.copyOf(beginSecond, capacity)
+        beginData = java.util.Arrays.copyOf(beginData, capacity * DataStride)
+      beginKeys(beginCount) = key
+      beginFirst(beginCount) = first
+      beginSecond(beginCount) = second
+      java.util.Arrays.fill(beginData, beginCount * DataStride, (beginCount + 1) * DataStride, 0.0)
+      beginCount += 1
+      sorted = false
+
+    def describeLast(nx: Double, ny: Double, px: Double, py: Double, speed: Double, impulse: Double): Unit =
+      val k = (beginCount - 1) * DataStride
+      beginData(k + NormalX) = nx
+      beginData(k + NormalY) = ny
+      beginData(k + PointX) = px
+      beginData(k + PointY) = py
+      beginData(k + ApproachSpeed) = speed
+      beginData(k + NormalImpulse) = impulse
+
+    def addEnd(key: Long, first: Shape, second: Shape): Unit =
+      if endCount == endKeys.length then
+        val capacity = 2 * endCount
+        endKeys = java.util.Arrays.copyOf(endKeys, capacity)
+        endFirst = java.util.Arrays.copyOf(endFirst, capacity)
+        endSecond = java.util.Arrays.copyOf(endSecond, capacity)
+      endKeys(endCount) = key
+      endFirst(endCount) = first
+      endSecond(endCount) = second
+      endCount += 1
+      sorted = false
+
+    /** Orders the begins and the ends by key (once: a step nobody reads the events of skips it). */
+    def sort(): Unit = if !sorted then
+      sorted = true
+      val needed = math.max(beginCount, endCount)
+      if beginOrder.length < needed then
+        beginOrder = new Array[Int](needed); endOrder = new Array[Int](needed); scratch = new Array[Int](needed)
+      var i = 0
+      while i < beginCount do { beginOrder(i) = i; i += 1 }
+      i = 0
+      while i < endCount do { endOrder(i) = i; i += 1 }
+      sortByKey(beginOrder, beginKeys, beginCount, scratch)
+      sortByKey(endOrder, endKeys, endCount, scratch)
 
   /** Sorts positions `order(0 until count)` by `keys(order(i))` (stable merge sort, `scratch` at
     * least `count` long): allocation-free.

@@ -1,5 +1,6 @@
 package sims.collision
 
+import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.Shape
 
 /** A shape that began to overlap a sensor in the last step (see [[SensorEvents]]).
@@ -32,35 +33,42 @@ final case class SensorEnd(sensor: Shape, visitor: Shape)
   * The collections are refilled by the next step (see [[ContactEvents]]).
   */
 final class SensorEvents private[sims] (tracker: PairTracker):
-  private val log = EventLog[SensorBegin, SensorEnd]()
+  // The events as objects, made from the tracker's arrays when first asked for after a step.
+  private val beginList = ArrayBuffer.empty[SensorBegin]
+  private val endList = ArrayBuffer.empty[SensorEnd]
+  private var made = -1L
 
   /** The shapes that began to overlap a sensor in the last step. */
-  def begins: collection.IndexedSeq[SensorBegin] = log.shownBegins
+  def begins: collection.IndexedSeq[SensorBegin] =
+    make()
+    beginList
 
   /** The shapes that stopped overlapping a sensor in the last step. */
-  def ends: collection.IndexedSeq[SensorEnd] = log.shownEnds
+  def ends: collection.IndexedSeq[SensorEnd] =
+    make()
+    endList
 
   /** Every (sensor, visitor) pair overlapping now, in world order. */
   def overlaps: IndexedSeq[(Shape, Shape)] =
-    tracker.openSorted().toIndexedSeq.map(i => (tracker.openFirstShape(i), tracker.openSecondShape(i)))
+    val pairs = tracker.openPairs()
+    IndexedSeq.tabulate(pairs.keys.length)(i => (pairs.first(i), pairs.second(i)))
 
   /** The shapes overlapping `sensor` now, in world order. */
   def visitors(sensor: Shape): IndexedSeq[Shape] = overlaps.collect { case (s, v) if s eq sensor => v }
 
-  /** Shows the tracker's events of the step just finished. */
-  private[sims] def publish(): Unit =
-    log.next()
-    var k = 0
-    while k < tracker.begins do
-      log.nextBegins += SensorBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k))
-      k += 1
-    k = 0
-    while k < tracker.ends do
-      log.nextEnds += SensorEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
-      k += 1
-    log.show()
+  /** Makes the event objects of the last step, unless made already. */
+  private def make(): Unit =
+    if made != tracker.generation then
+      beginList.clear()
+      endList.clear()
+      var k = 0
+      while k < tracker.begins do
+        beginList += SensorBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k))
+        k += 1
+      k = 0
+      while k < tracker.ends do
+        endList += SensorEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
+        k += 1
+      made = tracker.generation
 
-  /** The log of shown events (the world starts, undoes and clears it with the step). */
-  private[sims] def shown: EventLog[SensorBegin, SensorEnd] = log
-
-  override def toString: String = s"SensorEvents(${begins.size} begins, ${ends.size} ends)"
+  override def toString: String = s"SensorEvents(${tracker.begins} begins, ${tracker.ends} ends)"

@@ -317,8 +317,6 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   private def startEvents(): Unit =
     contactTracker.beginStep()
     sensorTracker.beginStep()
-    contactLog.shown.beginStep()
-    sensorLog.shown.beginStep()
 
   /** The events of the step just solved: the pairs the solver found touching (a solver of the
     * library reports them as it goes; another one's are taken from its `contacts`), the sensors'
@@ -327,7 +325,6 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   private def finishEvents(): Unit =
     if !_solver.reportsTouching then reportContacts()
     contactTracker.finishStep(this)
-    contactLog.publish()
     if sensorCount > 0 then
       if sensorListStale then
         sensorList.clear()
@@ -335,7 +332,6 @@ class World(makeDetector: World => Detector = GridDetector(_)):
         sensorListStale = false
       sensorOverlaps.find(this, sensorList, sensorTracker)
     sensorTracker.finishStep(this)
-    sensorLog.publish()
 
   /** The touching contacts of a solver that does not report them itself: every contact of its
     * `contacts` with a point at or below zero separation.
@@ -366,8 +362,6 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   private[sims] def restoreEvents(touching: PairTracker.Saved, overlapping: PairTracker.Saved): Unit =
     contactTracker.restoreOpen(touching)
     sensorTracker.restoreOpen(overlapping)
-    contactLog.shown.clear()
-    sensorLog.shown.clear()
 
   /** The bodies, for the solvers' loops (not to be modified). */
   private[sims] def bodyList: ArrayBuffer[Body] = bodyBuffer
@@ -409,8 +403,6 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     beforeStep.load(this)
     contactTracker.undoStep()
     sensorTracker.undoStep()
-    contactLog.shown.undo()
-    sensorLog.shown.undo()
     var i = 0
     while i < workspaces.length do
       workspaces(i) match

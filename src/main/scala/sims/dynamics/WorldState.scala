@@ -30,8 +30,8 @@ final class WorldState private ():
       if !withSolvers then null
       else world.carriedStates.map(_.copyState()).toArray
     if withSolvers then
-      touching = world.contactTracker.copyOpen()
-      overlapping = world.sensorTracker.copyOpen()
+      touching = world.contactTracker.openPairs()
+      overlapping = world.sensorTracker.openPairs()
     val bs = world.bodies
     if bodies.length != bs.length then
       bodies = new Array[Body](bs.length)
