@@ -141,3 +141,25 @@ object Defaults:
     * substep), m.
     */
   val ContactLoadDepth: Double = 0.002
+
+  // ---- Contact events and bullets (issue 15)
+
+  /** A pair of shapes that touched stays touching, for its contact events, while its shapes
+    * are at most this far apart (hysteresis: a box resting on the ground that loses its contact
+    * for a step, by a bounce of micrometres, does not end and begin again), m.
+    */
+  val ContactHysteresis: Double = 0.005
+
+  /** A bullet stopped at a fixed shape by the continuous collision stage is left reaching this
+    * far into it, so that the next step's narrowphase finds the contact, m (half the classic
+    * step's `ToleratedOverlap`).
+    */
+  val BulletDepth: Double = 0.005
+
+  /** The time of impact of a bullet is found to within this distance of `BulletDepth`, m. */
+  val BulletTolerance: Double = 0.0005
+
+  /** The most advancement steps of one time of impact search; a search that has not met the
+    * shape by then stops where it is (never beyond the shape).
+    */
+  val BulletIterations: Int = 64

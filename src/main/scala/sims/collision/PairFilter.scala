@@ -7,17 +7,31 @@ import sims.dynamics.{Body, Shape}
   * collision filters (`categoryBits`, `maskBits`, `groupIndex`), neither transient to the
   * other, and their bodies not joined by a joint whose `collideConnected` is false. The
   * broadphase applies it to every pair whose bounds overlap. Defaults accept every pair, as
-  * SiMS 1.2 did. (A pair rule for sensors belongs here too: one more test of the two shapes.)
+  * SiMS 1.2 did. Sensor shapes never collide; which shapes a sensor sees is `sensorSees`.
   */
 private[sims] object PairFilter:
   /** True if `a` and `b` may collide (their bounds are checked by the caller). */
   def accepts(a: Shape, b: Shape): Boolean =
     (a.body ne b.body) && a.collidable && b.collidable &&
+      !a.sensor && !b.sensor &&
       !(a.body.fixed && b.body.fixed) &&
       filtersAccept(a, b) &&
       !jointSeparated(a.body, b.body) &&
       (a.transientShapes.isEmpty || !a.transientShapes.contains(b)) &&
       (b.transientShapes.isEmpty || !b.transientShapes.contains(a))
+
+  /** True if the sensor shape `sensor` sees `visitor` when they overlap: the rules of `accepts`
+    * with the sensor taking the place of a collidable shape, a visitor that is not a sensor
+    * itself (sensors do not see each other, as in Box2D 3.1).
+    */
+  def sensorSees(sensor: Shape, visitor: Shape): Boolean =
+    (sensor.body ne visitor.body) && sensor.collidable && visitor.collidable &&
+      sensor.sensor && !visitor.sensor &&
+      !(sensor.body.fixed && visitor.body.fixed) &&
+      filtersAccept(sensor, visitor) &&
+      !jointSeparated(sensor.body, visitor.body) &&
+      (sensor.transientShapes.isEmpty || !sensor.transientShapes.contains(visitor)) &&
+      (visitor.transientShapes.isEmpty || !visitor.transientShapes.contains(sensor))
 
   /** Box2D's filter rule: the same non-zero group decides (positive: always, negative: never);
     * otherwise each shape's mask must share a bit with the other's categories.

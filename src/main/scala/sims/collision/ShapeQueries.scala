@@ -45,6 +45,10 @@ private[sims] final class ShapeQueries(world: World):
     fresh().query(minX, minY, maxX, maxY, found)
     found.filter(filter).toIndexedSeq
 
+  /** Adds to `found` the shapes whose bounds overlap the box, in world order (no filter, no copy). */
+  def near(minX: Double, minY: Double, maxX: Double, maxY: Double, found: ArrayBuffer[Shape]): Unit =
+    fresh().query(minX, minY, maxX, maxY, found)
+
   /** The shapes that contain the point, in world order. */
   def shapesAt(point: Vector2D, filter: Shape => Boolean): IndexedSeq[Shape] =
     query(point.x, point.y, point.x, point.y, s => s.contains(point) && filter(s))

@@ -165,6 +165,22 @@ final class Body(initialShapes: Shape*):
       fy += forceY
       tau += rx * forceY - ry * forceX
 
+  private var _bullet = false
+
+  /** Whether this body is a bullet (default false): after each step, under either solver, its
+    * motion over the step is swept against the fixed shapes near its path, and it is stopped
+    * where it would first have entered one (continuous collision), so that however fast it is
+    * it never passes through a fixed shape. Costs a sweep per bullet and step; other bodies and
+    * other pairs are unchanged (see docs/events.md for what each step catches without it).
+    */
+  def bullet: Boolean = _bullet
+
+  /** Makes the body a bullet or an ordinary body again, at any time. */
+  def bullet_=(value: Boolean): Unit =
+    if value != _bullet then
+      _bullet = value
+      if world != null then world.bulletChanged(value)
+
   /** Resulting force on the centre of mass, N. */
   def force: Vector2D = Vector2D(fx, fy)
 

@@ -70,6 +70,22 @@ abstract class Shape:
   /** Whether this shape takes part in collisions at all. */
   var collidable: Boolean = true
 
+  private var _sensor = false
+
+  /** Whether this shape is a sensor (default false): it never pushes nor is pushed (it takes
+    * no part in contacts, under either step), and the world reports the shapes that begin and
+    * stop overlapping it as `World.sensorEvents`. Its mass counts for its body as any shape's.
+    */
+  def sensor: Boolean = _sensor
+
+  /** Makes the shape a sensor or a solid shape again, at any time: from the next step, its
+    * contacts end (becoming a sensor) or its overlaps end (becoming solid), each with its event.
+    */
+  def sensor_=(value: Boolean): Unit =
+    if value != _sensor then
+      _sensor = value
+      if body != null && body.world != null then body.world.sensorChanged(value)
+
   /** Shapes this one never collides with (checked in both directions). */
   var transientShapes: Set[Shape] = Set.empty
 

@@ -2,7 +2,8 @@ package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
-import sims.collision.{Collision, Contact, Detector, GridDetector, RayHit, ShapeQueries}
+import sims.collision.{Collision, Contact, ContactEvents, Detector, GridDetector, PairTracker, RayHit, SensorEvents,
+  SensorOverlaps, ShapeQueries}
 import sims.dynamics.joints.{Joint, SpringJoint}
 import sims.geometry.{AABB, Vector2D}
 import sims.solver.{CarriedState, ClassicStep, Solver}
@@ -42,6 +43,21 @@ class World(makeDetector: World => Detector = GridDetector(_)):
 
   // The queries' own broadphase, brought up to date at the first query after a change.
   private val queries = ShapeQueries(this)
+
+  // Contact and sensor events: the pairs touching (overlapping) from step to step, the events
+  // of the last step, and the sensor shapes (counted as they join, leave and change their flag;
+  // listed in world order when the sensor stage next needs them).
+  private[sims] val contactTracker = PairTracker(ordered = false)
+  private[sims] val sensorTracker = PairTracker(ordered = true)
+  private val contactLog = ContactEvents(contactTracker)
+  private val sensorLog = SensorEvents(sensorTracker)
+  private val sensorOverlaps = SensorOverlaps()
+  private val sensorList = ArrayBuffer.empty[Shape]
+  private var sensorCount = 0
+  private var sensorListStale = false
+
+  /** Number of bullets (`Body.bullet`) among the bodies: the steps sweep them when it is not 0. */
+  private[sims] var bulletCount: Int = 0
 
   /** Whether collisions are detected and corrected. */
   var enableCollisionDetection: Boolean = true
@@ -112,6 +128,17 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     */
   def contacts: IndexedSeq[Contact] = _solver.contacts(this)
 
+  /** The contact events of the last step: the pairs of shapes that began to touch and those
+    * that stopped, every begin followed by exactly one end in a later step (see
+    * [[sims.collision.ContactEvents]]); valid until the next step.
+    */
+  def contactEvents: ContactEvents = contactLog
+
+  /** The sensor events of the last step: the shapes that began and stopped overlapping a sensor
+    * shape (`Shape.sensor`), paired like contact events (see [[sims.collision.SensorEvents]]).
+    */
+  def sensorEvents: SensorEvents = sensorLog
+
   /** The nearest shape that the straight path from `from` to `to` enters, among those `filter`
     * accepts (all by default), with where and at what fraction of the way; None if it enters
     * none. Shapes it starts inside are not hit; a user's shape kind is hit only if its class
@@ -150,6 +177,21 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   /** Tells the queries that shapes moved, joined or left: they take the bounds again when next asked. */
   private[sims] def shapesMoved(): Unit = queries.stale = true
 
+  /** Adds to `found`, in world order, every shape (collidable or not) whose bounds overlap the
+    * box: the query grid's answer, without a filter or a copy (for the library's own stages).
+    */
+  private[sims] def shapesNear(minX: Double, minY: Double, maxX: Double, maxY: Double,
+      found: ArrayBuffer[Shape]): Unit =
+    queries.near(minX, minY, maxX, maxY, found)
+
+  /** Called by a shape of this world whose `sensor` flag changed to `value`. */
+  private[sims] def sensorChanged(value: Boolean): Unit =
+    sensorCount += (if value then 1 else -1)
+    sensorListStale = true
+
+  /** Called by a body of this world whose `bullet` flag changed to `value`. */
+  private[sims] def bulletChanged(value: Boolean): Unit = bulletCount += (if value then 1 else -1)
+
   /** Adds a body; fails if it is already in this or another world. */
   def +=(body: Body): this.type =
     if body == null then throw IllegalArgumentException("body must not be null")
@@ -164,6 +206,7 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     shapeList ++= body.shapes
     shapesChanged = true
     shapesMoved()
+    countFlags(body, 1)
     this
 
   /** Adds a joint; fails if it is already in this or another world. Its bodies must be in
@@ -194,7 +237,16 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       shapeList.filterInPlace(_.body ne body)
       shapesChanged = true
       shapesMoved()
+      countFlags(body, -1)
     this
+
+  /** Counts the sensors and the bullet of a body joining (`sign` 1) or leaving (-1). */
+  private def countFlags(body: Body, sign: Int): Unit =
+    if body.bullet then bulletCount += sign
+    val sensors = body.shapes.count(_.sensor)
+    if sensors > 0 then
+      sensorCount += sign * sensors
+      sensorListStale = true
 
   /** Removes a joint. */
   def -=(joint: Joint): this.type =
@@ -224,11 +276,14 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     checkJoints()
     beforeStep.save(this, withSolvers = false)
     startSolverStep()
+    startEvents()
     shapesMoved()
     stage = World.StartStage
     try
       _solver.step(this)
       shapesMoved() // also after: a query made during the step (by a joint, say) saw other positions
+      stage = World.EventsStage
+      finishEvents()
       stage = World.PostStepStage
       postStep()
     catch case error: Throwable => failStep(error)
@@ -258,6 +313,36 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       "the world was restored to its state before the step"
     throw World.sameKind(error, message).getOrElse(StepFailedException(failedStage, message, error))
 
+  /** Starts the step's events: nothing touched yet. */
+  private def startEvents(): Unit =
+    contactTracker.beginStep()
+    sensorTracker.beginStep()
+
+  /** The events of the step just solved: the pairs the solver found touching (a solver of the
+    * library reports them as it goes; another one's are taken from its `contacts`), the sensors'
+    * overlaps, then the begins and ends of both.
+    */
+  private def finishEvents(): Unit =
+    if !_solver.reportsTouching then reportContacts()
+    contactTracker.finishStep(this)
+    if sensorCount > 0 then
+      if sensorListStale then
+        sensorList.clear()
+        shapeList.foreach(s => if s.sensor then sensorList += s)
+        sensorListStale = false
+      sensorOverlaps.find(this, sensorList, sensorTracker)
+    sensorTracker.finishStep(this)
+
+  /** The touching contacts of a solver that does not report them itself: every contact of its
+    * `contacts` with a point at or below zero separation.
+    */
+  private def reportContacts(): Unit =
+    for c <- _solver.contacts(this) if c.touching do
+      if contactTracker.touch(c.shape1, c.shape2) then
+        val n = c.points.length
+        contactTracker.describe(c.normal.x, c.normal.y, c.points.map(_.x).sum / n, c.points.map(_.y).sum / n, 0,
+          c.normalImpulses.sum)
+
   /** A copy of the dynamic state of every body and of the time, to `restore` later. */
   def snapshot(): WorldState =
     val state = WorldState.empty
@@ -270,6 +355,13 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     shapesMoved()
 
   private[sims] def time_=(t: Double): Unit = _time = t
+
+  /** Makes the pairs of a snapshot the open pairs of the contact and sensor events; the events
+    * shown are forgotten.
+    */
+  private[sims] def restoreEvents(touching: PairTracker.Saved, overlapping: PairTracker.Saved): Unit =
+    contactTracker.restoreOpen(touching)
+    sensorTracker.restoreOpen(overlapping)
 
   /** The bodies, for the solvers' loops (not to be modified). */
   private[sims] def bodyList: ArrayBuffer[Body] = bodyBuffer
@@ -309,6 +401,8 @@ class World(makeDetector: World => Detector = GridDetector(_)):
     */
   private def undoStep(): Unit =
     beforeStep.load(this)
+    contactTracker.undoStep()
+    sensorTracker.undoStep()
     var i = 0
     while i < workspaces.length do
       workspaces(i) match
@@ -386,6 +480,9 @@ object World:
 
   /** The world's post-step hook (phase 7). */
   private[sims] val PostStepStage = "post-step hook"
+
+  /** The contact and sensor events, after the solver's stages. */
+  private[sims] val EventsStage = "contact and sensor events"
 
   /** The solver's name for messages: its class's, without the parameters. */
   private[sims] def solverName(solver: Solver): String = solver.getClass.getSimpleName.stripSuffix("$")

@@ -2,8 +2,9 @@ package sims.dynamics
 
 /** The dynamic state of a world: time; for every body, position, rotation, velocities, force
   * and torque; the impulses each joint carries from step to step (the soft step's warm start);
-  * and what the solvers carry from step to step (the soft step's contact table). Restoring it
-  * and stepping again replays the run bit for bit.
+  * what the solvers carry from step to step (the soft step's contact table); and the pairs of
+  * shapes touching and overlapping sensors (the contact and sensor events' open pairs).
+  * Restoring it and stepping again replays the run, and its events, bit for bit.
   */
 final class WorldState private ():
   private var bodies = Array.empty[Body]
@@ -13,6 +14,9 @@ final class WorldState private ():
   private var jointImpulses = Array.empty[Double]
   // For a snapshot: the solvers' carried states, by workspace (null for a step's own save).
   private var carried: Array[AnyRef] = null
+  // For a snapshot: the open pairs of the contact and sensor events.
+  private var touching: sims.collision.PairTracker.Saved = null
+  private var overlapping: sims.collision.PairTracker.Saved = null
 
   /** Simulated time when the state was taken. */
   def timeOfState: Double = time
@@ -25,6 +29,9 @@ final class WorldState private ():
     carried =
       if !withSolvers then null
       else world.carriedStates.map(_.copyState()).toArray
+    if withSolvers then
+      touching = world.contactTracker.openPairs()
+      overlapping = world.sensorTracker.openPairs()
     val bs = world.bodies
     if bodies.length != bs.length then
       bodies = new Array[Body](bs.length)
@@ -55,6 +62,7 @@ final class WorldState private ():
       while k < states.length do
         states(k).restoreState(if k < carried.length then carried(k) else null)
         k += 1
+      world.restoreEvents(touching, overlapping)
     world.time = time
     var i = 0
     while i < bodies.length do

@@ -19,11 +19,16 @@ import sims.dynamics.joints.ForceJoint
   *   7. the world's post-step hook (run by the world)
   *
   * Results are the SPEC's rules to the bit; how they are computed (flat arrays, wave order) is
-  * free (deviation 6).
+  * free (deviation 6). Beside the SPEC's phases, two stages of issue 15 that change nothing in
+  * a world without bullets: the pairs that touch are reported to the world's contact events
+  * (`reportTouching`, after phase 4's detection and after phase 6), and bullets are swept
+  * against fixed shapes at the end ([[ContinuousCollision]]).
   */
 object ClassicStep extends Solver:
   def step(world: World): Unit =
     val h = world.timeStep
+    val bullets = world.bulletCount > 0
+    if bullets then bulletsOf(world).begin(world)
     world.stage = "advance time"
     advanceTime(world, h)                 // phase 1
     world.stage = "joint forces"
@@ -42,8 +47,19 @@ object ClassicStep extends Solver:
       world.stage = "position correction"
       correctPositions(world, h)          // phase 6
       world.guard("position correction", Checked.Positions)
+      if world.enableCollisionDetection then reportTouching(world)
+    if bullets then
+      world.stage = "continuous collision"
+      bulletsOf(world).sweep(world)
+      world.guard("continuous collision", Checked.Positions)
 
   override def toString: String = "ClassicStep"
+
+  /** The classic step reports the pairs that touch itself (see `reportTouching`). */
+  override private[sims] def reportsTouching: Boolean = true
+
+  private def bulletsOf(world: World): ContinuousCollision =
+    world.workspace(classOf[ContinuousCollision], ContinuousCollision())
 
   /** The detector's collisions after the last position correction: each point with the
     * separation -overlap of the shapes along the normal, impulses 0 (the classic step keeps none).
@@ -53,7 +69,7 @@ object ClassicStep extends Solver:
       val points = c.points.toIndexedSeq
       val separation = -Collision.overlapAlong(c.shape1, c.shape2, c.normal.x, c.normal.y)
       val zeros = IndexedSeq.fill(points.length)(0.0)
-      Contact(c.shape1, c.shape2, c.normal, points, IndexedSeq.fill(points.length)(separation), zeros, zeros)
+      Contact(c.shape1, c.shape2, c.normal, points, IndexedSeq.fill(points.length)(separation), zeros, zeros, zeros)
     }.toIndexedSeq
 
   private def advanceTime(world: World, h: Double): Unit = world.time = world.time + h
@@ -87,6 +103,7 @@ object ClassicStep extends Solver:
     val contacts = world.workspace(classOf[ContactSolver], ContactSolver())
     if world.enableCollisionDetection then
       world.detector.detect()
+      reportTouching(world) // before the velocities change: the approach speeds of new pairs
       contacts.load(world.detector.collisions)
     else contacts.clear()
     val joints = world.jointList
@@ -98,6 +115,41 @@ object ClassicStep extends Solver:
         i += 1
       contacts.correctVelocities(h)
       iteration += 1
+
+  /** Reports the detector's collisions with points to the world's contact events: a pair that
+    * touches now and did not before begins, with the collision's normal, the middle of its
+    * points and its approach speed (the fastest closing speed along the normal among its
+    * points, from the velocities as they are now).
+    */
+  private def reportTouching(world: World): Unit =
+    val collisions = world.detector.collisions
+    val tracker = world.contactTracker
+    var i = 0
+    while i < collisions.length do
+      val c = collisions(i)
+      c.load()
+      if c.pointCount > 0 && tracker.touch(c.shape1, c.shape2) then describe(c, tracker)
+      i += 1
+
+  private def describe(c: Collision, tracker: sims.collision.PairTracker): Unit =
+    val b1 = c.shape1.body
+    val b2 = c.shape2.body
+    val nx = c.normalX
+    val ny = c.normalY
+    var sumX, sumY = 0.0
+    var approach = 0.0
+    var p = 0
+    while p < c.pointCount do
+      val px = c.pointX(p)
+      val py = c.pointY(p)
+      sumX += px
+      sumY += py
+      // v2(p) - v1(p) along n: negative while the shapes close in.
+      val dvx = b2.vx - b2.w * (py - b2.y) - b1.vx + b1.w * (py - b1.y)
+      val dvy = b2.vy + b2.w * (px - b2.x) - b1.vy - b1.w * (px - b1.x)
+      approach = math.max(approach, -(dvx * nx + dvy * ny))
+      p += 1
+    tracker.describe(nx, ny, sumX / c.pointCount, sumY / c.pointCount, approach, 0)
 
   private def integrateVelocities(world: World, h: Double): Unit =
     val bodies = world.bodyList

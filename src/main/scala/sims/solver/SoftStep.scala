@@ -3,7 +3,7 @@ package sims.solver
 import sims.Defaults
 import sims.collision.Contact
 import sims.dynamics.{Checked, World}
-import sims.solver.soft.{ContactConstraints, SoftBodies, SoftWorkspace}
+import sims.solver.soft.{ContactConstraints, ContactTouching, SoftBodies, SoftWorkspace}
 
 /** The soft step (SOFTSTEP.md): substeps, soft constraints, warm starting, relaxation and
   * speculative contacts, the design Box2D v3 made the field's best for stable stacks, long
@@ -20,7 +20,10 @@ import sims.solver.soft.{ContactConstraints, SoftBodies, SoftWorkspace}
   *      `integratePositions`, `relax` (`solve` without bias)
   *   6. `applyRestitution`, once
   *   7. `finish`: placements and velocities back into the bodies, forces cleared; the
-  *      contacts with their impulses kept for the next step
+  *      touching contacts reported to the world's contact events; the contacts with their
+  *      impulses kept for the next step
+  *   8. bullets (`Body.bullet`) swept against fixed shapes ([[ContinuousCollision]]), in a world
+  *      that has them
   *
   * Friction and restitution of a pair are the products of the two shapes' values, as in the
   * classic step; `world.iterations` and `world.enablePositionCorrection` are the classic
@@ -74,6 +77,8 @@ final case class SoftStep(
   def step(world: World): Unit =
     val workspace = world.workspace(classOf[SoftWorkspace], SoftWorkspace())
     val h = world.timeStep / substeps
+    val bullets = world.bulletCount > 0
+    if bullets then bulletsOf(world).begin(world)
     // world.stage names the stage under way for the error of a failed step.
     world.stage = "advanceTime"
     advanceTime(world)
@@ -104,6 +109,16 @@ final case class SoftStep(
     applyRestitution(workspace)
     world.stage = "finish"
     finish(world, workspace)
+    if bullets then
+      world.stage = "continuous collision"
+      bulletsOf(world).sweep(world)
+      world.guard("continuous collision", Checked.Positions)
+
+  /** The soft step reports the contacts that touch itself (see [[sims.solver.soft.ContactTouching]]). */
+  override private[sims] def reportsTouching: Boolean = true
+
+  private def bulletsOf(world: World): ContinuousCollision =
+    world.workspace(classOf[ContinuousCollision], ContinuousCollision())
 
   /** A substep: the force joints' forces are applied in every substep. */
   override def forceInterval(world: World): Double = world.timeStep / substeps
@@ -237,6 +252,7 @@ final case class SoftStep(
     workspace.bodies.finish()
     world.guard("soft step substeps", Checked.Velocities)
     world.guard("soft step substeps", Checked.Positions)
+    ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker)
     workspace.table.commit()
 
 /** Checks of [[SoftStep]]'s parameters. */

@@ -23,3 +23,9 @@ trait Solver:
 
   /** The contacts of `world`'s last step with this solver, as copies. */
   def contacts(world: World): IndexedSeq[Contact]
+
+  /** Whether `step` reports the pairs that touch to the world's contact events itself (the
+    * library's solvers do, as they find them); otherwise the world takes every contact of
+    * `contacts` with a point at or below zero separation after each step.
+    */
+  private[sims] def reportsTouching: Boolean = false

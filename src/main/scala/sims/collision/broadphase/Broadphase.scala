@@ -10,13 +10,13 @@ import sims.dynamics.Shape
   */
 private[sims] trait Broadphase:
   /** Takes the current bounds of the collidable `shapes` (world order), each enlarged by
-    * `margin` on every side.
+    * `margin` on every side; shapes that are not collidable and sensors are left out.
     */
   def update(shapes: Array[Shape], margin: Double): Unit
 
   /** `update`, each shape's bounds also enlarged by how far its body can move in `sweep`
-    * seconds at its current speed; with `everyShape`, shapes that are not collidable are taken
-    * too (for queries).
+    * seconds at its current speed; with `everyShape`, shapes that are not collidable and sensors
+    * are taken too (for queries).
     */
   def update(shapes: Array[Shape], margin: Double, sweep: Double, everyShape: Boolean): Unit
 

@@ -71,7 +71,8 @@ private[sims] final class UniformGrid extends Broadphase:
   /** `update`, each shape's bounds also enlarged by how far its body's points can move in
     * `sweep` seconds at their current speed (|v| + |w| extent): a solver that makes contacts
     * before shapes touch (the soft step) then finds the pairs that can meet within the step.
-    * With `everyShape`, shapes that are not collidable are taken too (for queries).
+    * With `everyShape`, shapes that are not collidable and sensors are taken too (for queries); otherwise
+    * they are left out (they collide with nothing).
     */
   def update(shapes: Array[Shape], margin: Double, sweep: Double, everyShape: Boolean): Unit =
     this.shapes = shapes
@@ -88,7 +89,7 @@ private[sims] final class UniformGrid extends Broadphase:
     var i = 0
     while i < count do
       val s = shapes(i)
-      if !s.collidable && !everyShape then placement(i) = Ignored
+      if (!s.collidable || s.sensor) && !everyShape then placement(i) = Ignored
       else
         val reach =
           if sweep == 0 then margin

@@ -149,12 +149,15 @@ private[sims] final class Narrowphase:
   private def forget(slot: PairSlot, c: Collision): Unit =
     if slot.result eq c then slot.invalidate()
 
-  /** A pair whose methods are not one built-in kind: through the partial functions. */
-  def collideGeneral(r: Resolved, a: Shape, b: Shape): Collision =
-    val colliding = r.test match
+  /** Whether `a` and `b` collide by the test `r` chose for their classes (no collision made). */
+  def test(r: Resolved, a: Shape, b: Shape): Boolean =
+    r.test match
       case t: BuiltInMethods.Test => t.direct(a, b)
       case t => t((a, b))
-    if !colliding then null
+
+  /** A pair whose methods are not one built-in kind: through the partial functions. */
+  def collideGeneral(r: Resolved, a: Shape, b: Shape): Collision =
+    if !test(r, a, b) then null
     else if r.make == null then
       throw IllegalStateException(s"no collision method for a colliding pair of " +
         s"${a.getClass.getSimpleName} and ${b.getClass.getSimpleName}")

@@ -51,6 +51,7 @@ private[sims] object ContactConstraints:
         val kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB
         hot(q + TangentMass) = if kTangent > 0 then 1 / kTangent else 0
         hot(q + MaxNormalImpulse) = 0
+        hot(q + TotalNormalImpulse) = 0
         val dvx = state(sB) - state(sB + 2) * rBy - state(sA) + state(sA + 2) * rAy
         val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
         hot(q + RelativeVelocity) = dvx * nx + dvy * ny
@@ -132,6 +133,9 @@ private[sims] object ContactConstraints:
         val total = math.max(accumulated + impulse, 0.0)
         impulse = total - accumulated
         hot(q + NormalImpulse) = total
+        // A substep applies its accumulated impulse in all (warm start, solve, relax): at the
+        // end of its relax pass, this is what it applied.
+        if !useBias then hot(q + TotalNormalImpulse) += total
         if impulse > hot(q + MaxNormalImpulse) then hot(q + MaxNormalImpulse) = impulse
         val px = impulse * nx; val py = impulse * ny
         vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
@@ -193,6 +197,7 @@ private[sims] object ContactConstraints:
             val total = math.max(accumulated - hot(q + NormalMass) * (vn + e * hot(q + RelativeVelocity)), 0.0)
             val impulse = total - accumulated
             hot(q + NormalImpulse) = total
+            hot(q + TotalNormalImpulse) += impulse
             bodies.applyImpulse(a, -impulse * nx, -impulse * ny, rAx, rAy)
             bodies.applyImpulse(b, impulse * nx, impulse * ny, rBx, rBy)
           p += 1

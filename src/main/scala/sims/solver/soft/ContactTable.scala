@@ -72,6 +72,7 @@ private[sims] object ContactTable:
   inline val TangentImpulse = 8
   inline val MaxNormalImpulse = 9 // the largest normal impulse applied in one solve
   inline val RelativeVelocity = 10 // the fastest normal approach of the step (at its start, then in the solves)
+  inline val TotalNormalImpulse = 11 // the normal impulse applied over the step: its substeps and restitution
   inline val HotPoint = 12
 
   // A contact's cold block in `Contacts.cold`, at `c * ColdStride`: what the collision stage

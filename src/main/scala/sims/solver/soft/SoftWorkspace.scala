@@ -89,7 +89,7 @@ private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
       }
       def column(offset: Int) = IndexedSeq.tabulate(count)(p => hot(contacts.hotPoint(c, p) + offset))
       sims.collision.Contact(contacts.shapeA(c), contacts.shapeB(c), sims.geometry.Vector2D(nx, ny), points,
-        separations, column(NormalImpulse), column(TangentImpulse))
+        separations, column(NormalImpulse), column(TangentImpulse), column(TotalNormalImpulse))
     }
 
   def copyState(): AnyRef = table.copyCommitted()

@@ -85,11 +85,15 @@ object Renderer:
     val outline = fill.darker()
     body.shapes.foreach { shape =>
       val outlinePath = shapePath(shape, viewport)
-      g.setColor(fill)
-      g.fill(outlinePath)
+      // A sensor pushes nothing: its outline alone, dashed, so what passes through it shows.
+      if !shape.sensor then
+        g.setColor(fill)
+        g.fill(outlinePath)
       g.setColor(outline)
       // An edge has no inside to fill: its line is drawn thicker.
-      g.setStroke(BasicStroke(if shape.isInstanceOf[Edge] then 2.5f else 1f))
+      g.setStroke(
+        if shape.sensor then BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, Array(5f, 3f), 0f)
+        else BasicStroke(if shape.isInstanceOf[Edge] then 2.5f else 1f))
       g.draw(outlinePath)
       shape match
         case circle: Circle =>
@@ -131,7 +135,7 @@ object Renderer:
     path.closePath()
     path
 
-  /** A scene's overlay: its boxes and highlighted shapes' outlines, then its lines. */
+  /** A scene's overlay: its boxes and highlighted shapes' outlines, then its lines and labels. */
   private def drawOverlay(g: Graphics2D, overlay: Overlay, viewport: Viewport): Unit =
     g.setColor(HighlightColour)
     g.setStroke(BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, Array(6f, 4f), 0f))
@@ -144,6 +148,10 @@ object Renderer:
     g.setColor(LineColour)
     g.setStroke(BasicStroke(2f))
     overlay.lines.foreach(segment => g.draw(line(segment.vertex1, segment.vertex2, viewport)))
+    if overlay.labels.nonEmpty then
+      g.setFont(Font(Font.SANS_SERIF, Font.BOLD, 13))
+      g.setColor(JointColour)
+      for (at, text) <- overlay.labels do g.drawString(text, viewport.pixelX(at.x).toFloat, viewport.pixelY(at.y).toFloat)
 
   private def boxPath(shape: Shape, viewport: Viewport): Rectangle2D =
     val box = shape.AABB

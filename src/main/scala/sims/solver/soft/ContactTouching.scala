@@ -1,0 +1,58 @@
+package sims.solver.soft
+
+import sims.collision.PairTracker
+import sims.solver.soft.ContactTable.*
+
+/** Which of the soft step's contacts touch, for the world's contact events, after the substeps
+  * and restitution: a contact touches when one of its points is at or below zero separation at
+  * the end of the step, or applied a normal impulse during it. A speculative point (its shapes
+  * up to a few centimetres apart) does not count until it pushes: then the shapes met within a
+  * substep, though a bounce may part them again by the end of the step.
+  *
+  * A pair that begins is described by its normal, the middle of its touching points (where
+  * they are at the end of the step), its approach speed (the fastest closing speed along the
+  * normal the step saw at its points: the impact's) and the normal impulse its points applied
+  * over the step.
+  */
+private[sims] object ContactTouching:
+
+  /** Reports the touching contacts of `contacts` (this step's, after restitution) to `tracker`. */
+  def report(contacts: Contacts, bodies: SoftBodies, tracker: PairTracker): Unit =
+    val hot = contacts.hot
+    val state = bodies.state
+    var c = 0
+    while c < contacts.count do
+      val a = contacts.bodyA(c)
+      val b = contacts.bodyB(c)
+      val sA = a * SoftBodies.Stride
+      val sB = b * SoftBodies.Stride
+      val k = contacts.offset(c)
+      val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+      var touching = 0
+      var sumX, sumY = 0.0
+      var fastest = 0.0
+      var impulse = 0.0
+      var p = 0
+      while p < contacts.pointCount(c) do
+        val q = contacts.hotPoint(c, p)
+        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+        val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
+        // The arms turned by each body's turn since the start of the step.
+        val armAX = state(sA + 6) * rAx - state(sA + 7) * rAy
+        val armAY = state(sA + 7) * rAx + state(sA + 6) * rAy
+        val armBX = state(sB + 6) * rBx - state(sB + 7) * rBy
+        val armBY = state(sB + 7) * rBx + state(sB + 6) * rBy
+        val gapX = state(sB + 3) - state(sA + 3) + armBX - armAX
+        val gapY = state(sB + 4) - state(sA + 4) + armBY - armAY
+        val separation = gapX * nx + gapY * ny + hot(q + BaseSeparation)
+        val pushed = hot(q + TotalNormalImpulse)
+        if separation <= 0 || pushed > 0 then
+          touching += 1
+          sumX += bodies.startX(a) + state(sA + 3) + armAX
+          sumY += bodies.startY(a) + state(sA + 4) + armAY
+          fastest = math.max(fastest, -hot(q + RelativeVelocity))
+        impulse += pushed
+        p += 1
+      if touching > 0 && tracker.touch(contacts.shapeA(c), contacts.shapeB(c)) then
+        tracker.describe(nx, ny, sumX / touching, sumY / touching, fastest, impulse)
+      c += 1
