@@ -11,23 +11,26 @@ import sims.dynamics.World
   *   2. settings: time step, iterations, gravity, the two flags, time, the grid detector's cell
   *      side and pair limit, the solver (ClassicStep, or SoftStep with all its parameters);
   *   3. bodies in order: each shape (Circle, Rectangle, RegularPolygon, Capsule, Edge or
-  *      HullPolygon with its arguments and material, collidable, placement, filter bits), the
-  *      body's frame (mass, inertia, the shapes' offsets)
-  *      and state (placement, velocities, force, torque, fixed); then each shape's transient
-  *      shapes, by index;
+  *      HullPolygon with its arguments and material, collidable, placement, filter bits,
+  *      sensor), the body's frame (mass, inertia, the shapes' offsets) and state (placement,
+  *      velocities, force, torque, fixed, bullet); then each shape's transient shapes, by index;
   *   4. joints in order (Distance, Spring, Revolute, Prismatic, Mouse): bodies by index, the
   *      anchors and body placements they were made from, their settings, soft-step impulses
   *      and `collideConnected`;
   *   5. the soft step's contact table (the last step's contacts with their impulses), if the
-  *      world has stepped with the soft step.
+  *      world has stepped with the soft step;
+  *   6. the pairs of shapes touching and overlapping sensors (the open pairs of the contact and
+  *      sensor events), by index, so that a loaded world reports no begin for a pair that
+  *      already touched.
   * A world's own subclass (its `postStep`), user shape, joint, detector or solver types are not
   * saved: `save` names the type it cannot write.
   */
 object WorldCodec:
   /** The version of the format `save` writes; `load` reads this one and every earlier one
-    * (version 1 had no capsules, edges, hull polygons, filter bits or `collideConnected`).
+    * (version 1 had no capsules, edges, hull polygons, filter bits or `collideConnected`;
+    * version 2 no sensors, bullets or open event pairs).
     */
-  val FormatVersion: Int = 2
+  val FormatVersion: Int = 3
 
   /** The bytes of `world`'s state; fails with an IllegalArgumentException naming a type it cannot
     * save.

@@ -1,7 +1,7 @@
 package sims.io
 
 import java.io.{ByteArrayInputStream, DataInputStream, EOFException}
-import sims.collision.GridDetector
+import sims.collision.{GridDetector, PairTracker}
 import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.geometry.Vector2D
@@ -32,6 +32,7 @@ private[io] object WorldReader:
       for s <- shapes do s.transientShapes = Seq.fill(in.readInt())(shapes(in.readInt())).toSet
       for _ <- 0 until in.readInt() do world += joint(in, bodies, version)
       if in.readBoolean() then contacts(in, world)
+      if version >= 3 then world.restoreEvents(openPairs(in, shapes), openPairs(in, shapes))
       if in.available() != 0 then throw IllegalArgumentException(s"${in.available()} bytes after the saved world")
       world
     catch
@@ -84,6 +85,7 @@ private[io] object WorldReader:
     b.fx = in.readDouble(); b.fy = in.readDouble(); b.tau = in.readDouble()
     b.allCentred = in.readBoolean()
     b.fixed = in.readBoolean()
+    if version >= 3 then b.bullet = in.readBoolean()
     b.updateInverseMass()
     b.vx = vx; b.vy = vy; b.w = w
     b
@@ -119,6 +121,7 @@ private[io] object WorldReader:
       s.categoryBits = in.readInt()
       s.maskBits = in.readInt()
       s.groupIndex = in.readInt()
+    if version >= 3 then s.sensor = in.readBoolean()
     s
 
   private def joint(in: DataInputStream, bodies: IndexedSeq[Body], version: Int): Joint =
@@ -162,6 +165,19 @@ private[io] object WorldReader:
     for i <- 0 until impulses do j.softImpulse(i) = in.readDouble()
     if version >= 2 then j.collideConnected = in.readBoolean()
     j
+
+  /** Open event pairs by shape index, keyed by the loaded shapes (whose join orders keep the
+    * saved ones' order, so the keys stay sorted).
+    */
+  private def openPairs(in: DataInputStream, shapes: IndexedSeq[Shape]): PairTracker.Saved =
+    val count = in.readInt()
+    if count < 0 then throw IllegalArgumentException(s"a negative count of open pairs, $count, in the saved world")
+    val first = new Array[Shape](count)
+    val second = new Array[Shape](count)
+    for i <- 0 until count do
+      first(i) = shapes(in.readInt())
+      second(i) = shapes(in.readInt())
+    PairTracker.Saved(Array.tabulate(count)(i => PairTracker.keyOf(first(i), second(i))), first, second)
 
   /** The soft step's committed contacts, keyed by the loaded shapes. */
   private def contacts(in: DataInputStream, world: World): Unit =

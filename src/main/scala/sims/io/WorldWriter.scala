@@ -1,7 +1,7 @@
 package sims.io
 
 import java.io.{ByteArrayOutputStream, DataOutputStream}
-import sims.collision.GridDetector
+import sims.collision.{GridDetector, PairTracker}
 import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, JointOrigin, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.solver.{ClassicStep, SoftStep}
@@ -28,6 +28,8 @@ private[io] object WorldWriter:
     out.writeInt(world.joints.length)
     world.joints.foreach(joint(out, _, bodyIndex))
     contacts(out, world, shapeIndex)
+    openPairs(out, world.contactTracker.openPairs(), shapeIndex)
+    openPairs(out, world.sensorTracker.openPairs(), shapeIndex)
     out.flush()
     bytes.toByteArray
 
@@ -66,6 +68,7 @@ private[io] object WorldWriter:
       out.writeDouble(d)
     out.writeBoolean(b.allCentred)
     out.writeBoolean(b.fixed)
+    out.writeBoolean(b.bullet)
 
   private def shape(out: DataOutputStream, s: Shape): Unit =
     s match
@@ -100,6 +103,7 @@ private[io] object WorldWriter:
     out.writeInt(s.categoryBits)
     out.writeInt(s.maskBits)
     out.writeInt(s.groupIndex)
+    out.writeBoolean(s.sensor)
 
   private def joint(out: DataOutputStream, j: Joint, bodyIndex: Map[Body, Int]): Unit =
     def origin(o: JointOrigin): Unit =
@@ -150,6 +154,16 @@ private[io] object WorldWriter:
           val hot = table.offset(c)
           for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do out.writeDouble(table.hot(hot + k))
           for k <- 0 until ContactTable.ColdStride do out.writeDouble(table.cold(c * ContactTable.ColdStride + k))
+
+  /** Open event pairs, in key order, by shape index; pairs with a shape that has left the world
+    * (which end at the next step) are left out, and their ends with them.
+    */
+  private def openPairs(out: DataOutputStream, pairs: PairTracker.Saved, shapeIndex: Map[Shape, Int]): Unit =
+    val kept = pairs.keys.indices.filter(i => shapeIndex.contains(pairs.first(i)) && shapeIndex.contains(pairs.second(i)))
+    out.writeInt(kept.length)
+    for i <- kept do
+      out.writeInt(shapeIndex(pairs.first(i)))
+      out.writeInt(shapeIndex(pairs.second(i)))
 
   private def unsupported(what: String, value: AnyRef): Nothing =
     throw IllegalArgumentException(s"cannot save a $what of type ${value.getClass.getName}: the format " +

@@ -54,7 +54,7 @@ class EventPairingSpec extends AnyFunSuite with Matchers with ScalaCheckProperty
         val touched = scene.touchedNow()
         phase4Only += scene.phase4Only()
         withClue(s"step $step (${world.solver}), touching but not open: ") { (touched -- open.keySet) shouldBe empty }
-        for (a, b) <- open.keySet -- touched do
+        for (a, b) <- open.keySet.toSet -- touched do
           withClue(s"step $step (${world.solver}), open but neither touching nor near: $a, $b: ") {
             inWorld(world, a) shouldBe true
             inWorld(world, b) shouldBe true
