@@ -1,6 +1,5 @@
 package sims.collision
 
-import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.Shape
 import sims.geometry.Vector2D
 
@@ -45,45 +44,26 @@ final case class ContactEnd(shape1: Shape, shape2: Shape)
   * post-step hook or after `step()`, and copy what you want to keep. Their objects are made when
   * first read after a step: a world whose events nobody reads makes none.
   */
-final class ContactEvents private[sims] (tracker: PairTracker):
-  // The events as objects, made from the tracker's arrays when first asked for after a step.
-  private val beginList = ArrayBuffer.empty[ContactBegin]
-  private val endList = ArrayBuffer.empty[ContactEnd]
-  private var made = -1L
+final class ContactEvents private[sims] (tracker: PairTracker)
+    extends TrackedEvents[ContactBegin, ContactEnd](tracker):
 
   /** The pairs that began to touch in the last step. */
-  def begins: collection.IndexedSeq[ContactBegin] =
-    make()
-    beginList
+  def begins: collection.IndexedSeq[ContactBegin] = beginsOfLastStep
 
   /** The pairs that stopped touching in the last step. */
-  def ends: collection.IndexedSeq[ContactEnd] =
-    make()
-    endList
+  def ends: collection.IndexedSeq[ContactEnd] = endsOfLastStep
 
   /** The pairs touching now (begun and not ended), in world order: (shape1, shape2) as in their
     * [[ContactBegin]].
     */
-  def touching: IndexedSeq[(Shape, Shape)] =
-    val pairs = tracker.openPairs()
-    IndexedSeq.tabulate(pairs.keys.length)(i => (pairs.first(i), pairs.second(i)))
+  def touching: IndexedSeq[(Shape, Shape)] = openPairs
 
-  /** Makes the event objects of the last step, unless made already. */
-  private def make(): Unit =
-    if made != tracker.generation then
-      beginList.clear()
-      endList.clear()
-      var k = 0
-      while k < tracker.begins do
-        beginList += ContactBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k),
-          Vector2D(tracker.beginValue(k, PairTracker.NormalX), tracker.beginValue(k, PairTracker.NormalY)),
-          Vector2D(tracker.beginValue(k, PairTracker.PointX), tracker.beginValue(k, PairTracker.PointY)),
-          tracker.beginValue(k, PairTracker.ApproachSpeed), tracker.beginValue(k, PairTracker.NormalImpulse))
-        k += 1
-      k = 0
-      while k < tracker.ends do
-        endList += ContactEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
-        k += 1
-      made = tracker.generation
+  protected def makeBegin(k: Int): ContactBegin =
+    ContactBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k),
+      Vector2D(tracker.beginValue(k, PairTracker.NormalX), tracker.beginValue(k, PairTracker.NormalY)),
+      Vector2D(tracker.beginValue(k, PairTracker.PointX), tracker.beginValue(k, PairTracker.PointY)),
+      tracker.beginValue(k, PairTracker.ApproachSpeed), tracker.beginValue(k, PairTracker.NormalImpulse))
 
-  override def toString: String = s"ContactEvents(${tracker.begins} begins, ${tracker.ends} ends)"
+  protected def makeEnd(k: Int): ContactEnd = ContactEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
+
+  override def toString: String = s"ContactEvents($counts)"

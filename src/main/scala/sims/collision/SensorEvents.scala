@@ -1,6 +1,5 @@
 package sims.collision
 
-import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.Shape
 
 /** A shape that began to overlap a sensor in the last step (see [[SensorEvents]]).
@@ -32,43 +31,22 @@ final case class SensorEnd(sensor: Shape, visitor: Shape)
   *
   * The collections are refilled by the next step (see [[ContactEvents]]).
   */
-final class SensorEvents private[sims] (tracker: PairTracker):
-  // The events as objects, made from the tracker's arrays when first asked for after a step.
-  private val beginList = ArrayBuffer.empty[SensorBegin]
-  private val endList = ArrayBuffer.empty[SensorEnd]
-  private var made = -1L
+final class SensorEvents private[sims] (tracker: PairTracker) extends TrackedEvents[SensorBegin, SensorEnd](tracker):
 
   /** The shapes that began to overlap a sensor in the last step. */
-  def begins: collection.IndexedSeq[SensorBegin] =
-    make()
-    beginList
+  def begins: collection.IndexedSeq[SensorBegin] = beginsOfLastStep
 
   /** The shapes that stopped overlapping a sensor in the last step. */
-  def ends: collection.IndexedSeq[SensorEnd] =
-    make()
-    endList
+  def ends: collection.IndexedSeq[SensorEnd] = endsOfLastStep
 
   /** Every (sensor, visitor) pair overlapping now, in world order. */
-  def overlaps: IndexedSeq[(Shape, Shape)] =
-    val pairs = tracker.openPairs()
-    IndexedSeq.tabulate(pairs.keys.length)(i => (pairs.first(i), pairs.second(i)))
+  def overlaps: IndexedSeq[(Shape, Shape)] = openPairs
 
   /** The shapes overlapping `sensor` now, in world order. */
   def visitors(sensor: Shape): IndexedSeq[Shape] = overlaps.collect { case (s, v) if s eq sensor => v }
 
-  /** Makes the event objects of the last step, unless made already. */
-  private def make(): Unit =
-    if made != tracker.generation then
-      beginList.clear()
-      endList.clear()
-      var k = 0
-      while k < tracker.begins do
-        beginList += SensorBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k))
-        k += 1
-      k = 0
-      while k < tracker.ends do
-        endList += SensorEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
-        k += 1
-      made = tracker.generation
+  protected def makeBegin(k: Int): SensorBegin = SensorBegin(tracker.beginFirstShape(k), tracker.beginSecondShape(k))
 
-  override def toString: String = s"SensorEvents(${tracker.begins} begins, ${tracker.ends} ends)"
+  protected def makeEnd(k: Int): SensorEnd = SensorEnd(tracker.endFirstShape(k), tracker.endSecondShape(k))
+
+  override def toString: String = s"SensorEvents($counts)"
