@@ -5,9 +5,11 @@ package sims.solver.soft
   * stride 3 at an offset of a Double array. No allocation.
   */
 private[soft] object SmallMatrix:
-  /** dst = src^-1 for the n x n block at src(so) (n from 1 to 3); singular blocks give 0. */
+  /** dst = src^-1 for the n x n block at src(so) (n from 1 to 3); singular blocks give 0. Only
+    * the n x n block of dst is written: its other entries are never read, so they are not
+    * cleared (JMH, chain-100: 117 and 120 µs per step against 119 and 132 with the clearing).
+    */
   def invert(src: Array[Double], so: Int, n: Int, dst: Array[Double], dO: Int): Unit =
-    java.util.Arrays.fill(dst, dO, dO + 9, 0.0)
     n match
       case 1 =>
         val a = src(so)
