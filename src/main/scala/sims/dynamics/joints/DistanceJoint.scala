@@ -2,7 +2,7 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
-import sims.solver.soft.{JointRows, SoftBodies, SoftContext}
+import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
 
 /** Keeps the distance between two anchor points, one on each body, constant (documentation 4.9).
   *
@@ -124,42 +124,31 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
   // rotation since; u and C come from the bodies' displacements, K stays as prepared.
 
   private val accumulated = new Array[Double](1)
-  private var index1, index2 = 0
-  private var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
-  private var startCentresX, startCentresY = 0.0 // centre2 - centre1 at the start of the step
+  private val ends = SoftAnchors()
   private var axialMass = 0.0
   // Current geometry, set by `measureSoft`.
-  private var arm1X, arm1Y, arm2X, arm2Y, axisX, axisY, softLength = 0.0
+  private var axisX, axisY, softLength = 0.0
 
   override private[sims] def softImpulse: Array[Double] = accumulated
 
   override private[sims] def prepareSoft(context: SoftContext): Unit =
     val bodies = context.bodies
-    index1 = node1.index
-    index2 = node2.index
     a1.update()
     a2.update()
-    startArm1X = a1.armX; startArm1Y = a1.armY
-    startArm2X = a2.armX; startArm2Y = a2.armY
-    startCentresX = bodies.startX(index2) - bodies.startX(index1)
-    startCentresY = bodies.startY(index2) - bodies.startY(index1)
+    ends.start(bodies, node1.index, node2.index, a1.armX, a1.armY, a2.armX, a2.armY)
     measureSoft(bodies)
-    val cr1 = arm1X * axisY - arm1Y * axisX
-    val cr2 = arm2X * axisY - arm2Y * axisX
-    val k = bodies.invMass(index1) + bodies.invI(index1) * cr1 * cr1 + bodies.invMass(index2) + bodies.invI(index2) * cr2 * cr2
+    val cr1 = ends.arm1X * axisY - ends.arm1Y * axisX
+    val cr2 = ends.arm2X * axisY - ends.arm2Y * axisX
+    val i1 = ends.index1
+    val i2 = ends.index2
+    val k = bodies.invMass(i1) + bodies.invI(i1) * cr1 * cr1 + bodies.invMass(i2) + bodies.invI(i2) * cr2 * cr2
     axialMass = if k > 0 then 1 / k else 0
 
   /** The current arms, axis u and length |x| from the bodies' motion since the step began. */
   private def measureSoft(bodies: SoftBodies): Unit =
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
-    val state = bodies.state
-    arm1X = state(s1 + 6) * startArm1X - state(s1 + 7) * startArm1Y
-    arm1Y = state(s1 + 7) * startArm1X + state(s1 + 6) * startArm1Y
-    arm2X = state(s2 + 6) * startArm2X - state(s2 + 7) * startArm2Y
-    arm2Y = state(s2 + 7) * startArm2X + state(s2 + 6) * startArm2Y
-    val dx = startCentresX + state(s2 + 3) - state(s1 + 3) + arm2X - arm1X
-    val dy = startCentresY + state(s2 + 4) - state(s1 + 4) + arm2Y - arm1Y
+    ends.measure(bodies.state)
+    val dx = ends.centresX + ends.arm2X - ends.arm1X
+    val dy = ends.centresY + ends.arm2Y - ends.arm1Y
     softLength = math.sqrt(dx * dx + dy * dy)
     if softLength > 0 then
       axisX = dx / softLength
@@ -170,25 +159,22 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
   override private[sims] def rowsSoft(context: SoftContext, rows: JointRows): Unit =
     measureSoft(context.bodies)
     rows.count = 1
-    rows.set(0, -axisX, -axisY, -(arm1X * axisY - arm1Y * axisX), axisX, axisY, arm2X * axisY - arm2Y * axisX,
-      softLength - distance)
+    rows.set(0, -axisX, -axisY, -(ends.arm1X * axisY - ends.arm1Y * axisX), axisX, axisY,
+      ends.arm2X * axisY - ends.arm2Y * axisX, softLength - distance)
 
   override private[sims] def warmStartSoft(context: SoftContext): Unit =
     val bodies = context.bodies
     measureSoft(bodies)
-    val px = axisX * accumulated(0)
-    val py = axisY * accumulated(0)
-    bodies.applyImpulse(index1, -px, -py, arm1X, arm1Y)
-    bodies.applyImpulse(index2, px, py, arm2X, arm2Y)
+    applySoft(bodies, accumulated(0))
 
   override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
     val bodies = context.bodies
     measureSoft(bodies)
     val state = bodies.state
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
-    val vx = (state(s2) - state(s2 + 2) * arm2Y) - (state(s1) - state(s1 + 2) * arm1Y)
-    val vy = (state(s2 + 1) + state(s2 + 2) * arm2X) - (state(s1 + 1) + state(s1 + 2) * arm1X)
+    val s1 = ends.index1 * SoftBodies.Stride
+    val s2 = ends.index2 * SoftBodies.Stride
+    val vx = (state(s2) - state(s2 + 2) * ends.arm2Y) - (state(s1) - state(s1 + 2) * ends.arm1Y)
+    val vy = (state(s2 + 1) + state(s2 + 2) * ends.arm2X) - (state(s1 + 1) + state(s1 + 2) * ends.arm1X)
     val cdot = axisX * vx + axisY * vy
     val softness = context.jointSoftness
     val impulse =
@@ -197,9 +183,13 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
         -softness.massScale * axialMass * (cdot + softness.biasRate * c) - softness.impulseScale * accumulated(0)
       else -axialMass * cdot
     accumulated(0) += impulse
+    applySoft(bodies, impulse)
+
+  /** Applies the impulse `impulse` along the axis: -u to body 1, +u to body 2, at their points. */
+  private def applySoft(bodies: SoftBodies, impulse: Double): Unit =
     val px = axisX * impulse
     val py = axisY * impulse
-    bodies.applyImpulse(index1, -px, -py, arm1X, arm1Y)
-    bodies.applyImpulse(index2, px, py, arm2X, arm2Y)
+    bodies.applyImpulse(ends.index1, -px, -py, ends.arm1X, ends.arm1Y)
+    bodies.applyImpulse(ends.index2, px, py, ends.arm2X, ends.arm2Y)
 
   override def toString: String = s"DistanceJoint($node1, $node2, distance = $distance)"

@@ -2,7 +2,7 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
-import sims.solver.soft.{JointRows, SoftBodies, SoftContext}
+import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
 
 /** Lets body 2 slide along a line fixed on body 1, without turning relative to it.
   *
@@ -134,23 +134,15 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
   // since), solved as a soft constraint (SOFTSTEP.md section 3).
 
   private val accumulated = new Array[Double](2) // line, turn
-  private var index1, index2 = 0
-  private var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
-  private var startCentresX, startCentresY = 0.0 // centre2 - centre1 at the start of the step
+  private val ends = SoftAnchors()
   private var startNormalX, startNormalY = 0.0
 
   override private[sims] def softImpulse: Array[Double] = accumulated
 
   override private[sims] def prepareSoft(context: SoftContext): Unit =
-    val bodies = context.bodies
-    index1 = node1.index
-    index2 = node2.index
     prepare()
-    startArm1X = point1.armX; startArm1Y = point1.armY
-    startArm2X = point2.armX; startArm2Y = point2.armY
+    ends.start(context.bodies, node1.index, node2.index, point1.armX, point1.armY, point2.armX, point2.armY)
     startNormalX = normalX; startNormalY = normalY
-    startCentresX = bodies.startX(index2) - bodies.startX(index1)
-    startCentresY = bodies.startY(index2) - bodies.startY(index1)
 
   // The current line error, set by `measureSoft` with the normal and angular terms.
   private var lineErrorSoft = 0.0
@@ -159,26 +151,24 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     * from the bodies' motion since the step began.
     */
   private def measureSoft(state: Array[Double]): Unit =
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
+    ends.measure(state)
+    // The normal turns with body 1.
+    val s1 = ends.index1 * SoftBodies.Stride
     val c1 = state(s1 + 6); val sn1 = state(s1 + 7)
-    val c2 = state(s2 + 6); val sn2 = state(s2 + 7)
     normalX = c1 * startNormalX - sn1 * startNormalY
     normalY = sn1 * startNormalX + c1 * startNormalY
-    val arm1X = c1 * startArm1X - sn1 * startArm1Y
-    val arm1Y = sn1 * startArm1X + c1 * startArm1Y
-    val arm2X = c2 * startArm2X - sn2 * startArm2Y
-    val arm2Y = sn2 * startArm2X + c2 * startArm2Y
     // d + r1 = p2 - x1
-    val reachX = startCentresX + state(s2 + 3) - state(s1 + 3) + arm2X
-    val reachY = startCentresY + state(s2 + 4) - state(s1 + 4) + arm2Y
+    val reachX = ends.centresX + ends.arm2X
+    val reachY = ends.centresY + ends.arm2Y
     angular1 = reachX * normalY - reachY * normalX
-    angular2 = arm2X * normalY - arm2Y * normalX
-    lineErrorSoft = normalX * (reachX - arm1X) + normalY * (reachY - arm1Y)
+    angular2 = ends.arm2X * normalY - ends.arm2Y * normalX
+    lineErrorSoft = normalX * (reachX - ends.arm1X) + normalY * (reachY - ends.arm1Y)
 
   /** Applies the line impulse `line` and the turn impulse `turn` to both bodies. */
   private def applySoft(bodies: SoftBodies, line: Double, turn: Double): Unit =
     val state = bodies.state
+    val index1 = ends.index1
+    val index2 = ends.index2
     val s1 = index1 * SoftBodies.Stride
     val s2 = index2 * SoftBodies.Stride
     val px = normalX * line
@@ -196,6 +186,8 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val bodies = context.bodies
     val state = bodies.state
     measureSoft(state)
+    val index1 = ends.index1
+    val index2 = ends.index2
     val angleError = (bodies.startAngle(index2) + state(index2 * SoftBodies.Stride + 5)) -
       (bodies.startAngle(index1) + state(index1 * SoftBodies.Stride + 5)) - referenceAngle
     rows.count = 2
@@ -210,6 +202,8 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val bodies = context.bodies
     val state = bodies.state
     measureSoft(state)
+    val index1 = ends.index1
+    val index2 = ends.index2
     val s1 = index1 * SoftBodies.Stride
     val s2 = index2 * SoftBodies.Stride
     var lineRight = normalX * (state(s2) - state(s1)) + normalY * (state(s2 + 1) - state(s1 + 1)) +

@@ -2,7 +2,7 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
-import sims.solver.soft.{JointRows, SoftBodies, SoftContext}
+import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
 
 /** Pins two bodies together at one point; they may turn freely about it (a hinge).
   *
@@ -134,9 +134,7 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   // lambda = -massScale K^-1 (Cdot + biasRate C) - impulseScale lambdaAcc.
 
   private val accumulated = new Array[Double](2)
-  private var index1, index2 = 0
-  private var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
-  private var startCentresX, startCentresY = 0.0 // centre2 - centre1 at the start of the step
+  private val pin = SoftAnchors()
   // Set by `armsSoft`: the pin's error C = p2 - p1, and the arms from each centre to the middle
   // of p1 and p2, where both impulses act (as in the classic step: impulses at two points an
   // open pin apart would form a couple and change the angular momentum; measured 0.4% over
@@ -146,37 +144,22 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   override private[sims] def softImpulse: Array[Double] = accumulated
 
   override private[sims] def prepareSoft(context: SoftContext): Unit =
-    val bodies = context.bodies
-    index1 = node1.index
-    index2 = node2.index
     point1.update()
     point2.update()
-    startArm1X = point1.armX; startArm1Y = point1.armY
-    startArm2X = point2.armX; startArm2Y = point2.armY
-    startCentresX = bodies.startX(index2) - bodies.startX(index1)
-    startCentresY = bodies.startY(index2) - bodies.startY(index1)
+    pin.start(context.bodies, node1.index, node2.index, point1.armX, point1.armY, point2.armX, point2.armY)
 
   private def armsSoft(state: Array[Double]): Unit =
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
-    // The pin's points' arms, turned with their bodies since the step began.
-    val pin1X = state(s1 + 6) * startArm1X - state(s1 + 7) * startArm1Y
-    val pin1Y = state(s1 + 7) * startArm1X + state(s1 + 6) * startArm1Y
-    val pin2X = state(s2 + 6) * startArm2X - state(s2 + 7) * startArm2Y
-    val pin2Y = state(s2 + 7) * startArm2X + state(s2 + 6) * startArm2Y
-    errorX = startCentresX + state(s2 + 3) - state(s1 + 3) + pin2X - pin1X
-    errorY = startCentresY + state(s2 + 4) - state(s1 + 4) + pin2Y - pin1Y
+    pin.measure(state)
+    errorX = pin.centresX + pin.arm2X - pin.arm1X
+    errorY = pin.centresY + pin.arm2Y - pin.arm1Y
     // The middle is p1 + C / 2 from body 1's centre, p2 - C / 2 from body 2's.
-    arm1X = pin1X + 0.5 * errorX; arm1Y = pin1Y + 0.5 * errorY
-    arm2X = pin2X - 0.5 * errorX; arm2Y = pin2Y - 0.5 * errorY
+    arm1X = pin.arm1X + 0.5 * errorX; arm1Y = pin.arm1Y + 0.5 * errorY
+    arm2X = pin.arm2X - 0.5 * errorX; arm2Y = pin.arm2Y - 0.5 * errorY
 
   override private[sims] def directRows: Int = 2
 
   override private[sims] def rowsSoft(context: SoftContext, rows: JointRows): Unit =
-    val state = context.bodies.state
-    armsSoft(state)
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
+    armsSoft(context.bodies.state)
     rows.count = 2
     rows.set(0, -1, 0, arm1Y, 1, 0, -arm2Y, errorX)
     rows.set(1, 0, -1, -arm1X, 0, 1, arm2X, errorY)
@@ -184,15 +167,15 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   override private[sims] def warmStartSoft(context: SoftContext): Unit =
     val bodies = context.bodies
     armsSoft(bodies.state)
-    bodies.applyImpulse(index1, -accumulated(0), -accumulated(1), arm1X, arm1Y)
-    bodies.applyImpulse(index2, accumulated(0), accumulated(1), arm2X, arm2Y)
+    bodies.applyImpulse(pin.index1, -accumulated(0), -accumulated(1), arm1X, arm1Y)
+    bodies.applyImpulse(pin.index2, accumulated(0), accumulated(1), arm2X, arm2Y)
 
   override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
     val bodies = context.bodies
     val state = bodies.state
     armsSoft(state)
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
+    val s1 = pin.index1 * SoftBodies.Stride
+    val s2 = pin.index2 * SoftBodies.Stride
     val cdotX = state(s2) - state(s2 + 2) * arm2Y - state(s1) + state(s1 + 2) * arm1Y
     val cdotY = state(s2 + 1) + state(s2 + 2) * arm2X - state(s1 + 1) - state(s1 + 2) * arm1X
     var rightX = cdotX
@@ -211,7 +194,7 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     val impulseY = -massScale * solutionY - impulseScale * accumulated(1)
     accumulated(0) += impulseX
     accumulated(1) += impulseY
-    bodies.applyImpulse(index1, -impulseX, -impulseY, arm1X, arm1Y)
-    bodies.applyImpulse(index2, impulseX, impulseY, arm2X, arm2Y)
+    bodies.applyImpulse(pin.index1, -impulseX, -impulseY, arm1X, arm1Y)
+    bodies.applyImpulse(pin.index2, impulseX, impulseY, arm2X, arm2Y)
 
   override def toString: String = s"RevoluteJoint($node1, $node2, anchor = $anchor)"

@@ -1,0 +1,42 @@
+package sims.solver.soft
+
+/** A joint's two attachment points as the soft step moves them within a step, the part every
+  * two-body joint's soft formulas share: the bodies' indices in the step's arrays, the arms from
+  * each body's centre to its point at the start of the step, and, after any substep (`measure`),
+  * those arms turned with their bodies and the offset between the centres. Nothing is computed
+  * again from the bodies' placements during the step: the substeps move the bodies' arrays only.
+  */
+private[sims] final class SoftAnchors:
+  /** Index of body 1 and of body 2 in the step's arrays. */
+  var index1, index2 = 0
+  private var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
+  private var startCentresX, startCentresY = 0.0 // centre2 - centre1 at the start of the step
+  /** The arms from each body's centre to its point, turned with the bodies (set by `measure`). */
+  var arm1X, arm1Y, arm2X, arm2Y = 0.0
+  /** Body 2's centre minus body 1's (set by `measure`). */
+  var centresX, centresY = 0.0
+
+  /** Takes the bodies (by index) and their points' arms (arm = point - centre) at the start of
+    * the step.
+    */
+  def start(bodies: SoftBodies, index1: Int, index2: Int, arm1X: Double, arm1Y: Double, arm2X: Double,
+      arm2Y: Double): Unit =
+    this.index1 = index1
+    this.index2 = index2
+    startArm1X = arm1X; startArm1Y = arm1Y
+    startArm2X = arm2X; startArm2Y = arm2Y
+    startCentresX = bodies.startX(index2) - bodies.startX(index1)
+    startCentresY = bodies.startY(index2) - bodies.startY(index1)
+
+  /** Sets the arms and the centres' offset from the bodies' motion since the step began (their
+    * turn's cosine and sine, and their displacement, in `state`).
+    */
+  def measure(state: Array[Double]): Unit =
+    val s1 = index1 * SoftBodies.Stride
+    val s2 = index2 * SoftBodies.Stride
+    arm1X = state(s1 + 6) * startArm1X - state(s1 + 7) * startArm1Y
+    arm1Y = state(s1 + 7) * startArm1X + state(s1 + 6) * startArm1Y
+    arm2X = state(s2 + 6) * startArm2X - state(s2 + 7) * startArm2Y
+    arm2Y = state(s2 + 7) * startArm2X + state(s2 + 6) * startArm2Y
+    centresX = startCentresX + state(s2 + 3) - state(s1 + 3)
+    centresY = startCentresY + state(s2 + 4) - state(s1 + 4)
