@@ -1,7 +1,7 @@
 package sims.collision
 
 import sims.dynamics.{Circle, RoundedSegment, Shape}
-import sims.geometry.{ConvexPolygon, Segment}
+import sims.geometry.{ConvexPolygon, PolygonMath, Segment}
 
 /** How far apart two shapes of the built-in kinds are, and along which direction: the contact
   * events' hysteresis (is an open pair still within reach?) and the bullets' time of impact (how
@@ -76,15 +76,8 @@ private[sims] final class ShapeSeparation:
     val nxs = polygon.sideNormalXs
     val nys = polygon.sideNormalYs
     val count = xs.length
-    var best = Double.NegativeInfinity
-    var side = 0
-    var i = 0
-    while i < count do
-      val s = nxs(i) * (cx - xs(i)) + nys(i) * (cy - ys(i))
-      if s > best then
-        best = s
-        side = i
-      i += 1
+    val side = PolygonMath.farthestSide(xs, ys, nxs, nys, count, cx, cy)
+    val best = PolygonMath.sideDistance(xs, ys, nxs, nys, side, cx, cy)
     if best <= 0 then set(best - radius, nxs(side), nys(side))
     else
       nearestOnOutline(xs, ys, count, cx, cy)

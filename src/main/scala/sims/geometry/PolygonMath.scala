@@ -2,7 +2,8 @@ package sims.geometry
 
 /** The polygon geometry every part of the library shares, written once, on vertex arrays
   * (world coordinates, counter-clockwise; side i goes from vertex i to vertex i + 1): whether a
-  * point is inside, the projection onto an axis, and the outward side normals. Allocation-free,
+  * point is inside, the projection onto an axis, the outward side normals and the side a point
+  * lies farthest outside of. Allocation-free,
   * for the narrowphase's loops; the vector API (`ConvexPolygon`) calls the same functions.
   */
 private[sims] object PolygonMath:
@@ -60,3 +61,26 @@ private[sims] object PolygonMath:
       normalXs(i) = sideNormalX(xs, ys, count, i)
       normalYs(i) = sideNormalY(xs, ys, count, i)
       i += 1
+
+  /** How far (x, y) lies outside the line of side i (negative: inside it), along the side's
+    * outward unit normal (normalXs(i), normalYs(i)).
+    */
+  inline def sideDistance(xs: Array[Double], ys: Array[Double], normalXs: Array[Double], normalYs: Array[Double],
+      i: Int, x: Double, y: Double): Double =
+    normalXs(i) * (x - xs(i)) + normalYs(i) * (y - ys(i))
+
+  /** The side whose line (x, y) lies farthest outside of (`sideDistance` greatest; the first such
+    * side on a tie): for a point inside the polygon, the side it is least deep behind.
+    */
+  def farthestSide(xs: Array[Double], ys: Array[Double], normalXs: Array[Double], normalYs: Array[Double],
+      count: Int, x: Double, y: Double): Int =
+    var best = Double.NegativeInfinity
+    var side = 0
+    var i = 0
+    while i < count do
+      val distance = sideDistance(xs, ys, normalXs, normalYs, i, x, y)
+      if distance > best then
+        best = distance
+        side = i
+      i += 1
+    side

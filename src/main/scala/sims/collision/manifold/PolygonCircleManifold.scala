@@ -1,7 +1,7 @@
 package sims.collision.manifold
 
 import sims.dynamics.{Circle, Shape}
-import sims.geometry.ConvexPolygon
+import sims.geometry.{ConvexPolygon, PolygonMath}
 
 // Polygon-circle manifold. Side i (from vertex v_i to v_i+1, outward unit normal n_i) is
 // d_i = n_i . (c - v_i) away from the centre c. The side of greatest d_i is the one the
@@ -38,18 +38,11 @@ private[sims] object PolygonCircleManifold:
     val centreY = circle.y
     val radius = circle.radius
 
-    var side = 0
-    var sideDistance = Double.NegativeInfinity
-    var i = 0
-    while i < count do
-      val distance = normalXs(i) * (centreX - vertexXs(i)) + normalYs(i) * (centreY - vertexYs(i))
-      if distance > sideDistance then
-        sideDistance = distance
-        side = i
-      i += 1
+    var side = PolygonMath.farthestSide(vertexXs, vertexYs, normalXs, normalYs, count, centreX, centreY)
+    var sideDistance = PolygonMath.sideDistance(vertexXs, vertexYs, normalXs, normalYs, side, centreX, centreY)
 
     if sideDistance < 0 && lastSide >= 0 && lastSide < count && lastSide != side then
-      val lastDistance = normalXs(lastSide) * (centreX - vertexXs(lastSide)) + normalYs(lastSide) * (centreY - vertexYs(lastSide))
+      val lastDistance = PolygonMath.sideDistance(vertexXs, vertexYs, normalXs, normalYs, lastSide, centreX, centreY)
       if sideDistance - lastDistance <= radius then
         side = lastSide
         sideDistance = lastDistance
