@@ -448,17 +448,8 @@ class World(makeDetector: World => Detector = GridDetector(_)):
       if !ok then guardFailure(i, phase, checked)
       i += 1
 
-  /** The guard for a solver that keeps the bodies' state in an array during the step: body i's
-    * checked quantity is `values(i * stride)` to `values(i * stride + 2)`.
-    */
-  private[sims] def guard(phase: String, checked: Checked, values: Array[Double], stride: Int): Unit =
-    var i = 0
-    while i < bodyBuffer.length do
-      val k = i * stride
-      if !(finite(values(k)) && finite(values(k + 1)) && finite(values(k + 2))) then guardFailure(i, phase, checked)
-      i += 1
-
-  private def guardFailure(i: Int, phase: String, checked: Checked): Nothing =
+  /** Fails the step under way: body i's checked quantity is not finite after `phase`. */
+  private[sims] def guardFailure(i: Int, phase: String, checked: Checked): Nothing =
     guardFailed = true // `step` restores the world and rethrows this as it is
     throw ArithmeticException(s"non-finite ${checked.quantity} of body $i (${bodyBuffer(i)}) in phase '$phase'; " +
       "the world was restored to its state before the step")

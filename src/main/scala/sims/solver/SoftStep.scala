@@ -4,6 +4,7 @@ import sims.Defaults
 import sims.collision.Contact
 import sims.dynamics.{Checked, World}
 import sims.solver.soft.{ContactConstraints, ContactTouching, SoftBodies, SoftWorkspace}
+import sims.solver.soft.SoftBodies.*
 
 /** The soft step (SOFTSTEP.md): substeps, soft constraints, warm starting, relaxation and
   * speculative contacts, the design Box2D v3 made the field's best for stable stacks, long
@@ -95,7 +96,8 @@ final case class SoftStep(
       if substep == 0 then
         world.guard("joint forces", Checked.Forces)
         // Before the contacts spread a non-finite velocity to other bodies (NaN on a fixed one).
-        world.guard("integrateVelocities", Checked.Velocities, workspace.bodies.state, SoftBodies.Stride)
+        val failed = workspace.bodies.firstNonFiniteVelocity()
+        if failed >= 0 then world.guardFailure(failed, "integrateVelocities", Checked.Velocities)
       world.stage = "warmStart"
       warmStart(workspace)
       world.stage = "solve"
@@ -169,9 +171,9 @@ final case class SoftStep(
       val m = bodies.invMass(i)
       if m != 0 then
         val k = i * SoftBodies.Stride
-        state(k) += h * (gx + bodies.substepForceX(i) * m)
-        state(k + 1) += h * (gy + bodies.substepForceY(i) * m)
-        state(k + 2) += h * bodies.substepTorque(i) * bodies.invI(i)
+        state(k + VelocityX) += h * (gx + bodies.substepForceX(i) * m)
+        state(k + VelocityY) += h * (gy + bodies.substepForceY(i) * m)
+        state(k + AngularVelocity) += h * bodies.substepTorque(i) * bodies.invI(i)
       i += 1
 
   /** The force joints' forces at the substep's placements and velocities, added to the user's. */
@@ -232,17 +234,17 @@ final case class SoftStep(
     var i = 0
     while i < bodies.count do
       val k = i * SoftBodies.Stride
-      val vx = state(k); val vy = state(k + 1); val w = state(k + 2)
-      state(k + 3) += h * vx
-      state(k + 4) += h * vy
+      val vx = state(k + VelocityX); val vy = state(k + VelocityY); val w = state(k + AngularVelocity)
+      state(k + ShiftX) += h * vx
+      state(k + ShiftY) += h * vy
       if w != 0 then
-        state(k + 5) += h * w
-        val c = state(k + 6); val s = state(k + 7)
+        state(k + Turn) += h * w
+        val c = state(k + TurnCos); val s = state(k + TurnSin)
         val turnedC = c - h * w * s
         val turnedS = s + h * w * c
         val length = math.sqrt(turnedC * turnedC + turnedS * turnedS)
-        state(k + 6) = turnedC / length
-        state(k + 7) = turnedS / length
+        state(k + TurnCos) = turnedC / length
+        state(k + TurnSin) = turnedS / length
       i += 1
 
   private def applyRestitution(workspace: SoftWorkspace): Unit =

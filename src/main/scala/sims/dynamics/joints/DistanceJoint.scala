@@ -3,6 +3,7 @@ package sims.dynamics.joints
 import sims.dynamics.Body
 import sims.geometry.Vector2D
 import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
+import sims.solver.soft.SoftBodies.*
 
 /** Keeps the distance between two anchor points, one on each body, constant (documentation 4.9).
   *
@@ -173,8 +174,8 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
     val state = bodies.state
     val s1 = ends.index1 * SoftBodies.Stride
     val s2 = ends.index2 * SoftBodies.Stride
-    val vx = (state(s2) - state(s2 + 2) * ends.arm2Y) - (state(s1) - state(s1 + 2) * ends.arm1Y)
-    val vy = (state(s2 + 1) + state(s2 + 2) * ends.arm2X) - (state(s1 + 1) + state(s1 + 2) * ends.arm1X)
+    val vx = (state(s2 + VelocityX) - state(s2 + AngularVelocity) * ends.arm2Y) - (state(s1 + VelocityX) - state(s1 + AngularVelocity) * ends.arm1Y)
+    val vy = (state(s2 + VelocityY) + state(s2 + AngularVelocity) * ends.arm2X) - (state(s1 + VelocityY) + state(s1 + AngularVelocity) * ends.arm1X)
     val cdot = axisX * vx + axisY * vy
     val softness = context.jointSoftness
     val impulse =

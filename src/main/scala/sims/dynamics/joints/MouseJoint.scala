@@ -5,6 +5,7 @@ import sims.Defaults
 import sims.dynamics.{Body, Circle, World}
 import sims.geometry.Vector2D
 import sims.solver.soft.{SoftBodies, SoftContext, Softness}
+import sims.solver.soft.SoftBodies.*
 
 /** Pulls a point of a body towards a target point with a bounded force: what the viewer uses to
   * drag bodies with the mouse. Not part of the original SiMS.
@@ -192,8 +193,8 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
 
   private def armSoft(state: Array[Double]): Unit =
     val k = index * SoftBodies.Stride
-    armX = state(k + 6) * startArmX - state(k + 7) * startArmY
-    armY = state(k + 7) * startArmX + state(k + 6) * startArmY
+    armX = state(k + TurnCos) * startArmX - state(k + TurnSin) * startArmY
+    armY = state(k + TurnSin) * startArmX + state(k + TurnCos) * startArmY
 
   override private[sims] def warmStartSoft(context: SoftContext): Unit =
     val bodies = context.bodies
@@ -207,13 +208,13 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
     if m != 0 then // a fixed body cannot be dragged
       val state = bodies.state
       val k = index * SoftBodies.Stride
-      if useBias then state(k + 2) /= 1 + context.h * _angularDamping
+      if useBias then state(k + AngularVelocity) /= 1 + context.h * _angularDamping
       armSoft(state)
       val i = bodies.invI(index)
-      val cX = bodies.startX(index) + state(k + 3) + armX - _target.x
-      val cY = bodies.startY(index) + state(k + 4) + armY - _target.y
-      val rightX = state(k) - state(k + 2) * armY + softness.biasRate * cX
-      val rightY = state(k + 1) + state(k + 2) * armX + softness.biasRate * cY
+      val cX = bodies.startX(index) + state(k + ShiftX) + armX - _target.x
+      val cY = bodies.startY(index) + state(k + ShiftY) + armY - _target.y
+      val rightX = state(k + VelocityX) - state(k + AngularVelocity) * armY + softness.biasRate * cX
+      val rightY = state(k + VelocityY) + state(k + AngularVelocity) * armX + softness.biasRate * cY
       val k11 = m + i * armY * armY
       val k12 = -i * armX * armY
       val k22 = m + i * armX * armX

@@ -3,6 +3,7 @@ package sims.dynamics.joints
 import sims.dynamics.Body
 import sims.geometry.Vector2D
 import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
+import sims.solver.soft.SoftBodies.*
 
 /** Lets body 2 slide along a line fixed on body 1, without turning relative to it.
   *
@@ -154,7 +155,7 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     ends.measure(state)
     // The normal turns with body 1.
     val s1 = ends.index1 * SoftBodies.Stride
-    val c1 = state(s1 + 6); val sn1 = state(s1 + 7)
+    val c1 = state(s1 + TurnCos); val sn1 = state(s1 + TurnSin)
     normalX = c1 * startNormalX - sn1 * startNormalY
     normalY = sn1 * startNormalX + c1 * startNormalY
     // d + r1 = p2 - x1
@@ -173,12 +174,12 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val s2 = index2 * SoftBodies.Stride
     val px = normalX * line
     val py = normalY * line
-    state(s1) -= px * bodies.invMass(index1)
-    state(s1 + 1) -= py * bodies.invMass(index1)
-    state(s1 + 2) -= (angular1 * line + turn) * bodies.invI(index1)
-    state(s2) += px * bodies.invMass(index2)
-    state(s2 + 1) += py * bodies.invMass(index2)
-    state(s2 + 2) += (angular2 * line + turn) * bodies.invI(index2)
+    state(s1 + VelocityX) -= px * bodies.invMass(index1)
+    state(s1 + VelocityY) -= py * bodies.invMass(index1)
+    state(s1 + AngularVelocity) -= (angular1 * line + turn) * bodies.invI(index1)
+    state(s2 + VelocityX) += px * bodies.invMass(index2)
+    state(s2 + VelocityY) += py * bodies.invMass(index2)
+    state(s2 + AngularVelocity) += (angular2 * line + turn) * bodies.invI(index2)
 
   override private[sims] def directRows: Int = 2
 
@@ -188,8 +189,8 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     measureSoft(state)
     val index1 = ends.index1
     val index2 = ends.index2
-    val angleError = (bodies.startAngle(index2) + state(index2 * SoftBodies.Stride + 5)) -
-      (bodies.startAngle(index1) + state(index1 * SoftBodies.Stride + 5)) - referenceAngle
+    val angleError = (bodies.startAngle(index2) + state(index2 * SoftBodies.Stride + Turn)) -
+      (bodies.startAngle(index1) + state(index1 * SoftBodies.Stride + Turn)) - referenceAngle
     rows.count = 2
     rows.set(0, -normalX, -normalY, -angular1, normalX, normalY, angular2, lineErrorSoft)
     rows.set(1, 0, 0, -1, 0, 0, 1, angleError)
@@ -206,14 +207,14 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val index2 = ends.index2
     val s1 = index1 * SoftBodies.Stride
     val s2 = index2 * SoftBodies.Stride
-    var lineRight = normalX * (state(s2) - state(s1)) + normalY * (state(s2 + 1) - state(s1 + 1)) +
-      angular2 * state(s2 + 2) - angular1 * state(s1 + 2)
-    var turnRight = state(s2 + 2) - state(s1 + 2)
+    var lineRight = normalX * (state(s2 + VelocityX) - state(s1 + VelocityX)) + normalY * (state(s2 + VelocityY) - state(s1 + VelocityY)) +
+      angular2 * state(s2 + AngularVelocity) - angular1 * state(s1 + AngularVelocity)
+    var turnRight = state(s2 + AngularVelocity) - state(s1 + AngularVelocity)
     var massScale = 1.0
     var impulseScale = 0.0
     if useBias then
       val softness = context.jointSoftness
-      val angleError = (bodies.startAngle(index2) + state(s2 + 5)) - (bodies.startAngle(index1) + state(s1 + 5)) - referenceAngle
+      val angleError = (bodies.startAngle(index2) + state(s2 + Turn)) - (bodies.startAngle(index1) + state(s1 + Turn)) - referenceAngle
       lineRight += softness.biasRate * lineErrorSoft
       turnRight += softness.biasRate * angleError
       massScale = softness.massScale

@@ -3,6 +3,7 @@ package sims.dynamics.joints
 import sims.dynamics.Body
 import sims.geometry.Vector2D
 import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
+import sims.solver.soft.SoftBodies.*
 
 /** Pins two bodies together at one point; they may turn freely about it (a hinge).
   *
@@ -176,8 +177,8 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     armsSoft(state)
     val s1 = pin.index1 * SoftBodies.Stride
     val s2 = pin.index2 * SoftBodies.Stride
-    val cdotX = state(s2) - state(s2 + 2) * arm2Y - state(s1) + state(s1 + 2) * arm1Y
-    val cdotY = state(s2 + 1) + state(s2 + 2) * arm2X - state(s1 + 1) - state(s1 + 2) * arm1X
+    val cdotX = state(s2 + VelocityX) - state(s2 + AngularVelocity) * arm2Y - state(s1 + VelocityX) + state(s1 + AngularVelocity) * arm1Y
+    val cdotY = state(s2 + VelocityY) + state(s2 + AngularVelocity) * arm2X - state(s1 + VelocityY) - state(s1 + AngularVelocity) * arm1X
     var rightX = cdotX
     var rightY = cdotY
     var massScale = 1.0

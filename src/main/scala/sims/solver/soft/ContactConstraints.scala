@@ -1,6 +1,7 @@
 package sims.solver.soft
 
 import sims.solver.soft.ContactTable.*
+import sims.solver.soft.SoftBodies.*
 
 /** The soft step's contact constraints (SOFTSTEP.md sections 2 and 3), over the arrays of a
   * [[Contacts]] generation and of [[SoftBodies]].
@@ -52,8 +53,8 @@ private[sims] object ContactConstraints:
         hot(q + TangentMass) = if kTangent > 0 then 1 / kTangent else 0
         hot(q + MaxNormalImpulse) = 0
         hot(q + TotalNormalImpulse) = 0
-        val dvx = state(sB) - state(sB + 2) * rBy - state(sA) + state(sA + 2) * rAy
-        val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
+        val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) + state(sA + AngularVelocity) * rAy
+        val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
         hot(q + RelativeVelocity) = dvx * nx + dvy * ny
         p += 1
       stiffness.set(contacts, c, mA == 0 || mB == 0)
@@ -94,13 +95,13 @@ private[sims] object ContactConstraints:
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
       val mB = bodies.invMass(b); val iB = bodies.invI(b)
       val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
-      var vAx = state(sA); var vAy = state(sA + 1); var wA = state(sA + 2)
-      var vBx = state(sB); var vBy = state(sB + 1); var wB = state(sB + 2)
+      var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
+      var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
       // B's displacement relative to A's since the step began: the points' current separation.
-      val dpx = state(sB + 3) - state(sA + 3)
-      val dpy = state(sB + 4) - state(sA + 4)
-      val cosA = state(sA + 6); val sinA = state(sA + 7)
-      val cosB = state(sB + 6); val sinB = state(sB + 7)
+      val dpx = state(sB + ShiftX) - state(sA + ShiftX)
+      val dpy = state(sB + ShiftY) - state(sA + ShiftY)
+      val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
+      val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val count = contacts.pointCount(c)
@@ -164,8 +165,8 @@ private[sims] object ContactConstraints:
           vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
           vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
           p += 1
-      state(sA) = vAx; state(sA + 1) = vAy; state(sA + 2) = wA
-      state(sB) = vBx; state(sB + 1) = vBy; state(sB + 2) = wB
+      state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
+      state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       c += 1
 
   /** Once per step, after the substeps: a point that was approaching faster than `threshold`
@@ -190,8 +191,8 @@ private[sims] object ContactConstraints:
           if hot(q + RelativeVelocity) < -threshold && hot(q + MaxNormalImpulse) > 0 then
             val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
             val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-            val dvx = state(sB) - state(sB + 2) * rBy - state(sA) + state(sA + 2) * rAy
-            val dvy = state(sB + 1) + state(sB + 2) * rBx - state(sA + 1) - state(sA + 2) * rAx
+            val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) + state(sA + AngularVelocity) * rAy
+            val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
             val vn = dvx * nx + dvy * ny
             val accumulated = hot(q + NormalImpulse)
             val total = math.max(accumulated - hot(q + NormalMass) * (vn + e * hot(q + RelativeVelocity)), 0.0)

@@ -9,6 +9,7 @@ import sims.collision.narrowphase.{Narrowphase, PairKind}
 import sims.dynamics.{Circle, RoundedSegment, Shape, World}
 import sims.geometry.ConvexPolygon
 import sims.solver.soft.ContactTable.*
+import sims.solver.soft.SoftBodies.*
 
 /** The soft step's collision stage, once per step (SOFTSTEP.md sections 2.1 and 4): candidate
   * pairs from bounds enlarged by the speculative distance, then a manifold of at most two
@@ -89,10 +90,10 @@ private[sims] final class ContactFinder:
     val state = bodies.state
     val sA = a * SoftBodies.Stride
     val sB = b * SoftBodies.Stride
-    val dvx = state(sB) - state(sA)
-    val dvy = state(sB + 1) - state(sA + 1)
-    math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + 2)) * bodies.bodies(a).extent +
-      math.abs(state(sB + 2)) * bodies.bodies(b).extent
+    val dvx = state(sB + VelocityX) - state(sA + VelocityX)
+    val dvy = state(sB + VelocityY) - state(sA + VelocityY)
+    math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + AngularVelocity)) * bodies.bodies(a).extent +
+      math.abs(state(sB + AngularVelocity)) * bodies.bodies(b).extent
 
   /** Fills the manifold of a pair of built-in kinds. */
   private def builtIn(kind: PairKind, a: Shape, b: Shape, lastSide: Int, speculativeDistance: Double, linearSlop: Double): Unit =

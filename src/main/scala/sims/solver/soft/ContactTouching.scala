@@ -2,6 +2,7 @@ package sims.solver.soft
 
 import sims.collision.PairTracker
 import sims.solver.soft.ContactTable.*
+import sims.solver.soft.SoftBodies.*
 
 /** Which of the soft step's contacts touch, for the world's contact events, after the substeps
   * and restitution: a contact touches when one of its points is at or below zero separation at
@@ -38,18 +39,18 @@ private[sims] object ContactTouching:
         val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
         val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
         // The arms turned by each body's turn since the start of the step.
-        val armAX = state(sA + 6) * rAx - state(sA + 7) * rAy
-        val armAY = state(sA + 7) * rAx + state(sA + 6) * rAy
-        val armBX = state(sB + 6) * rBx - state(sB + 7) * rBy
-        val armBY = state(sB + 7) * rBx + state(sB + 6) * rBy
-        val gapX = state(sB + 3) - state(sA + 3) + armBX - armAX
-        val gapY = state(sB + 4) - state(sA + 4) + armBY - armAY
+        val armAX = state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy
+        val armAY = state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy
+        val armBX = state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy
+        val armBY = state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy
+        val gapX = state(sB + ShiftX) - state(sA + ShiftX) + armBX - armAX
+        val gapY = state(sB + ShiftY) - state(sA + ShiftY) + armBY - armAY
         val separation = gapX * nx + gapY * ny + hot(q + BaseSeparation)
         val pushed = hot(q + TotalNormalImpulse)
         if separation <= 0 || pushed > 0 then
           touching += 1
-          sumX += bodies.startX(a) + state(sA + 3) + armAX
-          sumY += bodies.startY(a) + state(sA + 4) + armAY
+          sumX += bodies.startX(a) + state(sA + ShiftX) + armAX
+          sumY += bodies.startY(a) + state(sA + ShiftY) + armAY
           fastest = math.max(fastest, -hot(q + RelativeVelocity))
         impulse += pushed
         p += 1

@@ -2,6 +2,7 @@ package sims.solver.soft
 
 import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.joints.Joint
+import sims.solver.soft.SoftBodies.*
 
 /** The soft step's direct solver for joints that form trees (a chain, a pendulum, a ragdoll):
   * in every pass it solves all the tree's joint rows at once, exactly, in time linear in the
@@ -251,7 +252,7 @@ private[sims] final class JointTrees:
             r += 1
         else
           val k = nodeRef(node) * SoftBodies.Stride
-          state(k) += x(3 * node); state(k + 1) += x(3 * node + 1); state(k + 2) += x(3 * node + 2)
+          state(k + VelocityX) += x(3 * node); state(k + VelocityY) += x(3 * node + 1); state(k + AngularVelocity) += x(3 * node + 2)
         node += 1
 
   /** The blocks of H, the right side, and each node's Jacobian block with its parent (k x 3,
@@ -383,4 +384,4 @@ private[sims] final class JointTrees:
   private def rowVelocity(joint: Int, r: Int, state: Array[Double], body: Int, jacobian: Array[Double]): Double =
     val k = body * SoftBodies.Stride
     val o = 6 * joint + 3 * r
-    jacobian(o) * state(k) + jacobian(o + 1) * state(k + 1) + jacobian(o + 2) * state(k + 2)
+    jacobian(o) * state(k + VelocityX) + jacobian(o + 1) * state(k + VelocityY) + jacobian(o + 2) * state(k + AngularVelocity)

@@ -1,5 +1,7 @@
 package sims.solver.soft
 
+import sims.solver.soft.SoftBodies.*
+
 /** A joint's two attachment points as the soft step moves them within a step, the part every
   * two-body joint's soft formulas share: the bodies' indices in the step's arrays, the arms from
   * each body's centre to its point at the start of the step, and, after any substep (`measure`),
@@ -34,9 +36,9 @@ private[sims] final class SoftAnchors:
   def measure(state: Array[Double]): Unit =
     val s1 = index1 * SoftBodies.Stride
     val s2 = index2 * SoftBodies.Stride
-    arm1X = state(s1 + 6) * startArm1X - state(s1 + 7) * startArm1Y
-    arm1Y = state(s1 + 7) * startArm1X + state(s1 + 6) * startArm1Y
-    arm2X = state(s2 + 6) * startArm2X - state(s2 + 7) * startArm2Y
-    arm2Y = state(s2 + 7) * startArm2X + state(s2 + 6) * startArm2Y
-    centresX = startCentresX + state(s2 + 3) - state(s1 + 3)
-    centresY = startCentresY + state(s2 + 4) - state(s1 + 4)
+    arm1X = state(s1 + TurnCos) * startArm1X - state(s1 + TurnSin) * startArm1Y
+    arm1Y = state(s1 + TurnSin) * startArm1X + state(s1 + TurnCos) * startArm1Y
+    arm2X = state(s2 + TurnCos) * startArm2X - state(s2 + TurnSin) * startArm2Y
+    arm2Y = state(s2 + TurnSin) * startArm2X + state(s2 + TurnCos) * startArm2Y
+    centresX = startCentresX + state(s2 + ShiftX) - state(s1 + ShiftX)
+    centresY = startCentresY + state(s2 + ShiftY) - state(s1 + ShiftY)

@@ -18,7 +18,9 @@ private[sims] final class SoftBodies:
   var count: Int = 0
   /** The bodies, by index. */
   var bodies: Array[Body] = new Array[Body](0)
-  /** Per body, `Stride` doubles: vx, vy, w, dx, dy, dAngle, cos(dAngle), sin(dAngle). */
+  /** Per body, `Stride` doubles at the offsets named in the companion: velocities, the
+    * displacement and turn since the step began, the turn's cosine and sine.
+    */
   var state: Array[Double] = new Array[Double](0)
   /** Per body: 1 / mass and 1 / I (0 and 0 for a fixed body). */
   var invMass, invI: Array[Double] = new Array[Double](0)
@@ -38,9 +40,9 @@ private[sims] final class SoftBodies:
       val b = list(i)
       bodies(i) = b
       val k = i * Stride
-      state(k) = b.vx; state(k + 1) = b.vy; state(k + 2) = b.w
-      state(k + 3) = 0; state(k + 4) = 0; state(k + 5) = 0
-      state(k + 6) = 1; state(k + 7) = 0
+      state(k + VelocityX) = b.vx; state(k + VelocityY) = b.vy; state(k + AngularVelocity) = b.w
+      state(k + ShiftX) = 0; state(k + ShiftY) = 0; state(k + Turn) = 0
+      state(k + TurnCos) = 1; state(k + TurnSin) = 0
       invMass(i) = b.invMass
       invI(i) = b.invI
       startX(i) = b.x; startY(i) = b.y; startAngle(i) = b.angle
@@ -49,19 +51,26 @@ private[sims] final class SoftBodies:
       i += 1
 
   /** Current x of body i's centre. */
-  inline def x(i: Int): Double = startX(i) + state(i * Stride + 3)
+  inline def x(i: Int): Double = startX(i) + state(i * Stride + ShiftX)
   /** Current y of body i's centre. */
-  inline def y(i: Int): Double = startY(i) + state(i * Stride + 4)
+  inline def y(i: Int): Double = startY(i) + state(i * Stride + ShiftY)
   /** Current rotation of body i. */
-  inline def angle(i: Int): Double = startAngle(i) + state(i * Stride + 5)
+  inline def angle(i: Int): Double = startAngle(i) + state(i * Stride + Turn)
+
+  /** The first body whose velocities are not all finite, or -1. */
+  def firstNonFiniteVelocity(): Int =
+    var i = 0
+    while i < count && finite(state(i * Stride + VelocityX)) && finite(state(i * Stride + VelocityY)) &&
+        finite(state(i * Stride + AngularVelocity)) do i += 1
+    if i < count then i else -1
 
   /** Adds the impulse (px, py) at arm (rx, ry) to body i's velocities. */
   inline def applyImpulse(i: Int, px: Double, py: Double, rx: Double, ry: Double): Unit =
     val k = i * Stride
     val m = invMass(i)
-    state(k) += px * m
-    state(k + 1) += py * m
-    state(k + 2) += (rx * py - ry * px) * invI(i)
+    state(k + VelocityX) += px * m
+    state(k + VelocityY) += py * m
+    state(k + AngularVelocity) += (rx * py - ry * px) * invI(i)
 
   /** Writes body i's current placement and velocities into the body object, without placing
     * its shapes (for joint code that reads bodies during the substeps).
@@ -69,16 +78,16 @@ private[sims] final class SoftBodies:
   def expose(i: Int): Unit =
     val b = bodies(i)
     val k = i * Stride
-    b.x = startX(i) + state(k + 3)
-    b.y = startY(i) + state(k + 4)
-    b.angle = startAngle(i) + state(k + 5)
-    b.vx = state(k); b.vy = state(k + 1); b.w = state(k + 2)
+    b.x = startX(i) + state(k + ShiftX)
+    b.y = startY(i) + state(k + ShiftY)
+    b.angle = startAngle(i) + state(k + Turn)
+    b.vx = state(k + VelocityX); b.vy = state(k + VelocityY); b.w = state(k + AngularVelocity)
 
   /** Takes body i's velocities back from the body object (after joint code changed them). */
   def absorb(i: Int): Unit =
     val b = bodies(i)
     val k = i * Stride
-    state(k) = b.vx; state(k + 1) = b.vy; state(k + 2) = b.w
+    state(k + VelocityX) = b.vx; state(k + VelocityY) = b.vy; state(k + AngularVelocity) = b.w
 
   /** Ends the step: every body gets its new velocities and placement, its shapes are placed,
     * and forces are cleared.
@@ -88,13 +97,16 @@ private[sims] final class SoftBodies:
     while i < count do
       val b = bodies(i)
       val k = i * Stride
-      b.vx = state(k); b.vy = state(k + 1); b.w = state(k + 2)
-      b.x = startX(i) + state(k + 3)
-      b.y = startY(i) + state(k + 4)
-      b.angle = startAngle(i) + state(k + 5)
+      b.vx = state(k + VelocityX); b.vy = state(k + VelocityY); b.w = state(k + AngularVelocity)
+      b.x = startX(i) + state(k + ShiftX)
+      b.y = startY(i) + state(k + ShiftY)
+      b.angle = startAngle(i) + state(k + Turn)
       b.fx = 0; b.fy = 0; b.tau = 0
-      if state(k + 3) != 0 || state(k + 4) != 0 || state(k + 5) != 0 then b.placeShapes()
+      if state(k + ShiftX) != 0 || state(k + ShiftY) != 0 || state(k + Turn) != 0 then b.placeShapes()
       i += 1
+
+  // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
+  private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
 
   private def grow(capacity: Int): Unit =
     bodies = new Array[Body](capacity)
@@ -107,6 +119,21 @@ private[sims] final class SoftBodies:
     substepForceX = new Array[Double](capacity); substepForceY = new Array[Double](capacity)
     substepTorque = new Array[Double](capacity)
 
+/** The layout of `SoftBodies.state`: body i's values start at `i * Stride`, at these offsets.
+  * This is the one place that names them; every reader and writer uses the names.
+  */
 private[sims] object SoftBodies:
+  /** Linear velocity, x and y, m/s. */
+  inline val VelocityX = 0
+  inline val VelocityY = 1
+  /** Angular velocity, rad/s. */
+  inline val AngularVelocity = 2
+  /** Displacement of the centre since the step began, x and y, m. */
+  inline val ShiftX = 3
+  inline val ShiftY = 4
+  /** Turn since the step began, rad, with its cosine and sine (integrated as a unit complex number). */
+  inline val Turn = 5
+  inline val TurnCos = 6
+  inline val TurnSin = 7
   /** Doubles per body in `state`. */
   inline val Stride = 8

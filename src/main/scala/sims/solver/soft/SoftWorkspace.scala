@@ -3,6 +3,7 @@ package sims.solver.soft
 import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.World
 import sims.dynamics.joints.{ForceJoint, Joint}
+import sims.solver.soft.SoftBodies.*
 
 /** What the soft step keeps for one world: the bodies' arrays, the contact table (carried from
   * step to step), the collision stage, the joints of the current step and the softness
@@ -76,15 +77,15 @@ private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
       val points = IndexedSeq.tabulate(count) { p =>
         val q = contacts.hotPoint(c, p)
         val rx = hot(q + AnchorAX); val ry = hot(q + AnchorAY)
-        sims.geometry.Vector2D(bodies.startX(a) + state(sA + 3) + state(sA + 6) * rx - state(sA + 7) * ry,
-          bodies.startY(a) + state(sA + 4) + state(sA + 7) * rx + state(sA + 6) * ry)
+        sims.geometry.Vector2D(bodies.startX(a) + state(sA + ShiftX) + state(sA + TurnCos) * rx - state(sA + TurnSin) * ry,
+          bodies.startY(a) + state(sA + ShiftY) + state(sA + TurnSin) * rx + state(sA + TurnCos) * ry)
       }
       val separations = IndexedSeq.tabulate(count) { p =>
         val q = contacts.hotPoint(c, p)
         val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
         val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-        val dx = state(sB + 3) - state(sA + 3) + (state(sB + 6) * rBx - state(sB + 7) * rBy) - (state(sA + 6) * rAx - state(sA + 7) * rAy)
-        val dy = state(sB + 4) - state(sA + 4) + (state(sB + 7) * rBx + state(sB + 6) * rBy) - (state(sA + 7) * rAx + state(sA + 6) * rAy)
+        val dx = state(sB + ShiftX) - state(sA + ShiftX) + (state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy) - (state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy)
+        val dy = state(sB + ShiftY) - state(sA + ShiftY) + (state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy) - (state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy)
         dx * nx + dy * ny + hot(q + BaseSeparation)
       }
       def column(offset: Int) = IndexedSeq.tabulate(count)(p => hot(contacts.hotPoint(c, p) + offset))
