@@ -1,9 +1,9 @@
 package sims.dynamics
 
 /** The dynamic state of a world: time; for every body, position, rotation, velocities, force
-  * and torque; the impulses each joint carries from step to step (the soft step's warm start);
-  * what the solvers carry from step to step (the soft step's contact table); and the pairs of
-  * shapes touching and overlapping sensors (the contact and sensor events' open pairs).
+  * and torque; what the solvers carry from step to step (the soft step's contact table and its
+  * joints' impulses, its warm start); and the pairs of shapes touching and overlapping sensors
+  * (the contact and sensor events' open pairs).
   * Restoring it and stepping again replays the run, and its events, bit for bit.
   */
 final class WorldState private ():
@@ -11,7 +11,6 @@ final class WorldState private ():
   private var values = Array.empty[Double]
   private var time = 0.0
   private var joints = Array.empty[sims.dynamics.joints.Joint]
-  private var jointImpulses = Array.empty[Double]
   // For a snapshot: the solvers' carried states, by workspace (null for a step's own save).
   private var carried: Array[AnyRef] = null
   // For a snapshot: the open pairs of the contact and sensor events.
@@ -54,7 +53,6 @@ final class WorldState private ():
     val js = world.joints
     if js.length != joints.length || js.indices.exists(i => js(i) ne joints(i)) then
       throw IllegalArgumentException("state was taken of a world with other joints")
-    loadJoints()
     if carried != null then
       // Solvers the world took up after the snapshot start again from nothing.
       val states = world.carriedStates
@@ -74,31 +72,13 @@ final class WorldState private ():
       b.placeShapes()
       i += 1
 
+  /** The joints of the world, to check that a restored world has the same ones. */
   private def saveJoints(world: World): Unit =
     val js = world.jointList
     if joints.length != js.length then joints = new Array(js.length)
-    var total = 0
     var i = 0
     while i < js.length do
       joints(i) = js(i)
-      total += js(i).softImpulse.length
-      i += 1
-    if jointImpulses.length < total then jointImpulses = new Array[Double](total)
-    var k = 0
-    i = 0
-    while i < js.length do
-      val impulse = js(i).softImpulse
-      System.arraycopy(impulse, 0, jointImpulses, k, impulse.length)
-      k += impulse.length
-      i += 1
-
-  private def loadJoints(): Unit =
-    var k = 0
-    var i = 0
-    while i < joints.length do
-      val impulse = joints(i).softImpulse
-      System.arraycopy(jointImpulses, k, impulse, 0, impulse.length)
-      k += impulse.length
       i += 1
 
 private[sims] object WorldState:

@@ -7,6 +7,7 @@ import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, R
 import sims.geometry.Vector2D
 import sims.solver.{ClassicStep, SoftStep}
 import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
+import sims.solver.soft.joints.JointConstraint
 
 /** Reads a world written by [[WorldWriter]], in the same order. */
 private[io] object WorldReader:
@@ -30,7 +31,7 @@ private[io] object WorldReader:
       bodies.foreach(world += _)
       val shapes = world.shapes
       for s <- shapes do s.transientShapes = Seq.fill(in.readInt())(shapes(in.readInt())).toSet
-      for _ <- 0 until in.readInt() do world += joint(in, bodies, version)
+      for _ <- 0 until in.readInt() do world += joint(in, world, bodies, version)
       if in.readBoolean() then contacts(in, world)
       if version >= 3 then world.restoreEvents(openPairs(in, shapes), openPairs(in, shapes))
       if in.available() != 0 then throw IllegalArgumentException(s"${in.available()} bytes after the saved world")
@@ -124,7 +125,7 @@ private[io] object WorldReader:
     if version >= 3 then s.sensor = in.readBoolean()
     s
 
-  private def joint(in: DataInputStream, bodies: IndexedSeq[Body], version: Int): Joint =
+  private def joint(in: DataInputStream, world: World, bodies: IndexedSeq[Body], version: Int): Joint =
     val tag = in.readByte()
     val node1 = if tag == MouseJointTag then null else bodies(in.readInt())
     val node2 = bodies(in.readInt())
@@ -159,10 +160,12 @@ private[io] object WorldReader:
         mouse.target = Vector2D(in.readDouble(), in.readDouble())
         mouse
       case other => throw IllegalArgumentException(s"unknown joint tag $other in the saved world")
-    val impulses = in.readInt()
-    if impulses != j.softImpulse.length then
-      throw IllegalArgumentException(s"$j carries ${j.softImpulse.length} impulses, the saved world has $impulses")
-    for i <- 0 until impulses do j.softImpulse(i) = in.readDouble()
+    val count = in.readInt()
+    val rows = JointConstraint.rowsOf(j)
+    if count != rows then throw IllegalArgumentException(s"$j carries $rows impulses, the saved world has $count")
+    val impulses = Array.fill(count)(in.readDouble())
+    // Only a world that stepped with the soft step has impulses; others get no soft step's data.
+    if impulses.exists(_ != 0) then world.workspace(classOf[SoftWorkspace], SoftWorkspace()).joints.setImpulses(j, impulses)
     if version >= 2 then j.collideConnected = in.readBoolean()
     j
 
@@ -197,4 +200,4 @@ private[io] object WorldReader:
       val hot = table.offset(c)
       for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do table.hot(hot + k) = in.readDouble()
       for k <- 0 until ContactTable.ColdStride do table.cold(c * ContactTable.ColdStride + k) = in.readDouble()
-    world.workspace(classOf[SoftWorkspace], SoftWorkspace()).restoreState(table)
+    world.workspace(classOf[SoftWorkspace], SoftWorkspace()).table.restoreCommitted(table)

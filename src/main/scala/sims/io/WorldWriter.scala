@@ -6,6 +6,7 @@ import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, Regul
 import sims.dynamics.joints.{DistanceJoint, Joint, JointOrigin, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.solver.{ClassicStep, SoftStep}
 import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
+import sims.solver.soft.joints.JointConstraint
 
 /** Writes a world in [[WorldCodec]]'s format; the order of `write` is the format's. */
 private[io] object WorldWriter:
@@ -26,7 +27,7 @@ private[io] object WorldWriter:
       // Sorted: the same world gives the same bytes, whatever the set's order.
       s.transientShapes.toSeq.map(t => shapeIndex.getOrElse(t, -1)).sorted.foreach(out.writeInt)
     out.writeInt(world.joints.length)
-    world.joints.foreach(joint(out, _, bodyIndex))
+    world.joints.foreach(joint(out, world, _, bodyIndex))
     contacts(out, world, shapeIndex)
     openPairs(out, world.contactTracker.openPairs(), shapeIndex)
     openPairs(out, world.sensorTracker.openPairs(), shapeIndex)
@@ -105,7 +106,7 @@ private[io] object WorldWriter:
     out.writeInt(s.groupIndex)
     out.writeBoolean(s.sensor)
 
-  private def joint(out: DataOutputStream, j: Joint, bodyIndex: Map[Body, Int]): Unit =
+  private def joint(out: DataOutputStream, world: World, j: Joint, bodyIndex: Map[Body, Int]): Unit =
     def origin(o: JointOrigin): Unit =
       for d <- Seq(o.anchor1.x, o.anchor1.y, o.anchor2.x, o.anchor2.y, o.x1, o.y1, o.angle1, o.x2, o.y2, o.angle2) do
         out.writeDouble(d)
@@ -130,13 +131,14 @@ private[io] object WorldWriter:
         for d <- Seq(m.maxForce, m.frequency, m.dampingRatio, m.angularDamping, m.target.x, m.target.y) do
           out.writeDouble(d)
       case other => unsupported("joint", other)
-    out.writeInt(j.softImpulse.length)
-    j.softImpulse.foreach(out.writeDouble)
+    val impulses = softWorkspace(world).map(_.joints.impulsesOf(j)).getOrElse(new Array[Double](JointConstraint.rowsOf(j)))
+    out.writeInt(impulses.length)
+    impulses.foreach(out.writeDouble)
     out.writeBoolean(j.collideConnected)
 
   /** The soft step's committed contacts, if the world has stepped with the soft step. */
   private def contacts(out: DataOutputStream, world: World, shapeIndex: Map[Shape, Int]): Unit =
-    world.carriedStates.collectFirst { case soft: SoftWorkspace => soft.table.committed } match
+    softWorkspace(world).map(_.table.committed) match
       case None => out.writeBoolean(false)
       case Some(table) =>
         out.writeBoolean(true)
@@ -154,6 +156,10 @@ private[io] object WorldWriter:
           val hot = table.offset(c)
           for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do out.writeDouble(table.hot(hot + k))
           for k <- 0 until ContactTable.ColdStride do out.writeDouble(table.cold(c * ContactTable.ColdStride + k))
+
+  /** The soft step's data of `world`, if it has stepped with the soft step. */
+  private def softWorkspace(world: World): Option[SoftWorkspace] =
+    world.carriedStates.collectFirst { case soft: SoftWorkspace => soft }
 
   /** Open event pairs, in key order, by shape index; pairs with a shape that has left the world
     * (which end at the next step) are left out, and their ends with them.

@@ -135,7 +135,7 @@ final case class SoftStep(
 
   private def loadBodies(world: World, workspace: SoftWorkspace): Unit =
     workspace.bodies.load(world.bodyList)
-    workspace.sortJoints(world, directJoints)
+    workspace.joints.sort(world, workspace.bodies, directJoints)
 
   private def findContacts(world: World, workspace: SoftWorkspace): Unit =
     if world.enableCollisionDetection then
@@ -151,10 +151,10 @@ final case class SoftStep(
     context.h = h
     context.inverseH = rate
     context.jointSoftness.set(math.min(jointHertz, 0.25 * rate), jointDampingRatio, h)
-    val joints = workspace.constraintJoints
+    val joints = workspace.joints.constraints
     var i = 0
     while i < joints.length do
-      joints(i).prepareSoft(context)
+      joints(i).prepare(context)
       i += 1
 
   /** Gravity and forces: v += h (g + F/m), w += h tau/I for every moving body; the force
@@ -162,7 +162,7 @@ final case class SoftStep(
     */
   private def integrateVelocities(world: World, workspace: SoftWorkspace, h: Double): Unit =
     val bodies = workspace.bodies
-    if workspace.forceJoints.nonEmpty then applyForceJoints(workspace)
+    if workspace.joints.forceJoints.nonEmpty then applyForceJoints(workspace)
     val gx = world.gravity.x
     val gy = world.gravity.y
     val state = bodies.state
@@ -179,7 +179,7 @@ final case class SoftStep(
   /** The force joints' forces at the substep's placements and velocities, added to the user's. */
   private def applyForceJoints(workspace: SoftWorkspace): Unit =
     val bodies = workspace.bodies
-    val touched = workspace.forceBodies
+    val touched = workspace.joints.forceBodies
     var t = 0
     while t < touched.length do
       val i = touched(t)
@@ -187,10 +187,10 @@ final case class SoftStep(
       val b = bodies.bodies(i)
       b.fx = bodies.forceX(i); b.fy = bodies.forceY(i); b.tau = bodies.torque(i)
       t += 1
-    val joints = workspace.forceJoints
+    val joints = workspace.joints.forceJoints
     var j = 0
     while j < joints.length do
-      joints(j).asInstanceOf[sims.dynamics.joints.ForceJoint].applyForce()
+      joints(j).applyForce()
       j += 1
     t = 0
     while t < touched.length do
@@ -201,29 +201,31 @@ final case class SoftStep(
 
   /** Applies the impulses accumulated so far: joints', then contacts'. */
   private def warmStart(workspace: SoftWorkspace): Unit =
-    workspace.trees.warmStart(workspace.context)
-    val joints = workspace.trees.iterative
+    val trees = workspace.joints.trees
+    trees.warmStart(workspace.context)
+    val joints = trees.iterative
     var i = 0
     while i < joints.length do
-      joints(i).warmStartSoft(workspace.context)
+      joints(i).warmStart(workspace.context)
       i += 1
     ContactConstraints.warmStart(workspace.table.current, workspace.bodies)
 
   /** One pass over the constraints, with the bias (solve) or without (relax): a soft
     * Gauss-Seidel sweep over the joints outside trees, then over the contacts, then the joint
-    * trees solved exactly ([[sims.solver.soft.JointTrees]]).
+    * trees solved exactly ([[sims.solver.soft.joints.JointTrees]]).
     */
   private def solve(workspace: SoftWorkspace, useBias: Boolean): Unit =
-    val joints = workspace.trees.iterative
+    val trees = workspace.joints.trees
+    val joints = trees.iterative
     var i = 0
     while i < joints.length do
-      joints(i).solveSoft(workspace.context, useBias)
+      joints(i).solve(workspace.context, useBias)
       i += 1
     ContactConstraints.solve(workspace.table.current, workspace.bodies, workspace.context.inverseH, contactSpeed, useBias)
     // The trees last: their exact solve leaves every joint of a tree exact at the end of the
     // pass, where a contact solved after it would pull a pin open (measured: a ragdoll landing
     // opened its pins by up to 13 mm with the trees first, 1.3 mm with them last).
-    workspace.trees.solve(workspace.context, useBias)
+    trees.solve(workspace.context, useBias)
 
   /** dp += h v, dAngle += h w, and the turn's cosine and sine (integrated as a unit complex
     * number, renormalised: no trigonometry per body and substep).

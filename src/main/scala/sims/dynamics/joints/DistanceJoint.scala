@@ -2,8 +2,6 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
-import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
-import sims.solver.soft.SoftBodies.*
 
 /** Keeps the distance between two anchor points, one on each body, constant (documentation 4.9).
   *
@@ -25,8 +23,12 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
   Vector2D.requireFinite("anchor1", anchor1)
   Vector2D.requireFinite("anchor2", anchor2)
 
-  private val a1 = Anchor(node1, anchor1)
-  private val a2 = Anchor(node2, anchor2)
+  /** The anchors on each body (the soft step reads them too). */
+  private[sims] val attachment1 = Anchor(node1, anchor1)
+  private[sims] val attachment2 = Anchor(node2, anchor2)
+  // The classic step's arms of the anchors.
+  private val a1 = attachment1.arm()
+  private val a2 = attachment2.arm()
 
   /** The anchors and placements this joint was made from (for saving a world). */
   private[sims] val origin: JointOrigin = JointOrigin(node1, anchor1, node2, anchor2)
@@ -119,78 +121,5 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
       // in the last bit (measured: multiplying here changes the golden "mixed" scene's hash).
       node1.displace(-(px / node1.mass), -(py / node1.mass), -((r1x * py - r1y * px) / node1.I))
       node2.displace(px / node2.mass, py / node2.mass, (r2x * py - r2y * px) / node2.I)
-
-  // ---- Soft step: the same C, J and K, solved as a soft constraint (SOFTSTEP.md section 3) on
-  // the substeps' velocities. Arms are taken at the start of the step and turned by each body's
-  // rotation since; u and C come from the bodies' displacements, K stays as prepared.
-
-  private val accumulated = new Array[Double](1)
-  private val ends = SoftAnchors()
-  private var axialMass = 0.0
-  // Current geometry, set by `measureSoft`.
-  private var axisX, axisY, softLength = 0.0
-
-  override private[sims] def softImpulse: Array[Double] = accumulated
-
-  override private[sims] def prepareSoft(context: SoftContext): Unit =
-    val bodies = context.bodies
-    a1.update()
-    a2.update()
-    ends.start(bodies, node1.index, node2.index, a1.armX, a1.armY, a2.armX, a2.armY)
-    measureSoft(bodies)
-    val cr1 = ends.arm1X * axisY - ends.arm1Y * axisX
-    val cr2 = ends.arm2X * axisY - ends.arm2Y * axisX
-    val i1 = ends.index1
-    val i2 = ends.index2
-    val k = bodies.invMass(i1) + bodies.invI(i1) * cr1 * cr1 + bodies.invMass(i2) + bodies.invI(i2) * cr2 * cr2
-    axialMass = if k > 0 then 1 / k else 0
-
-  /** The current arms, axis u and length |x| from the bodies' motion since the step began. */
-  private def measureSoft(bodies: SoftBodies): Unit =
-    ends.measure(bodies.state)
-    val dx = ends.centresX + ends.arm2X - ends.arm1X
-    val dy = ends.centresY + ends.arm2Y - ends.arm1Y
-    softLength = math.sqrt(dx * dx + dy * dy)
-    if softLength > 0 then
-      axisX = dx / softLength
-      axisY = dy / softLength
-
-  override private[sims] def directRows: Int = 1
-
-  override private[sims] def rowsSoft(context: SoftContext, rows: JointRows): Unit =
-    measureSoft(context.bodies)
-    rows.count = 1
-    rows.set(0, -axisX, -axisY, -(ends.arm1X * axisY - ends.arm1Y * axisX), axisX, axisY,
-      ends.arm2X * axisY - ends.arm2Y * axisX, softLength - distance)
-
-  override private[sims] def warmStartSoft(context: SoftContext): Unit =
-    val bodies = context.bodies
-    measureSoft(bodies)
-    applySoft(bodies, accumulated(0))
-
-  override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
-    val bodies = context.bodies
-    measureSoft(bodies)
-    val state = bodies.state
-    val s1 = ends.index1 * SoftBodies.Stride
-    val s2 = ends.index2 * SoftBodies.Stride
-    val vx = (state(s2 + VelocityX) - state(s2 + AngularVelocity) * ends.arm2Y) - (state(s1 + VelocityX) - state(s1 + AngularVelocity) * ends.arm1Y)
-    val vy = (state(s2 + VelocityY) + state(s2 + AngularVelocity) * ends.arm2X) - (state(s1 + VelocityY) + state(s1 + AngularVelocity) * ends.arm1X)
-    val cdot = axisX * vx + axisY * vy
-    val softness = context.jointSoftness
-    val impulse =
-      if useBias then
-        val c = softLength - distance
-        -softness.massScale * axialMass * (cdot + softness.biasRate * c) - softness.impulseScale * accumulated(0)
-      else -axialMass * cdot
-    accumulated(0) += impulse
-    applySoft(bodies, impulse)
-
-  /** Applies the impulse `impulse` along the axis: -u to body 1, +u to body 2, at their points. */
-  private def applySoft(bodies: SoftBodies, impulse: Double): Unit =
-    val px = axisX * impulse
-    val py = axisY * impulse
-    bodies.applyImpulse(ends.index1, -px, -py, ends.arm1X, ends.arm1Y)
-    bodies.applyImpulse(ends.index2, px, py, ends.arm2X, ends.arm2Y)
 
   override def toString: String = s"DistanceJoint($node1, $node2, distance = $distance)"

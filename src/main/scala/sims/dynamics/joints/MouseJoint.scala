@@ -4,8 +4,6 @@ import sims.Defaults
 
 import sims.dynamics.{Body, Circle, World}
 import sims.geometry.Vector2D
-import sims.solver.soft.{SoftBodies, SoftContext, Softness}
-import sims.solver.soft.SoftBodies.*
 
 /** Pulls a point of a body towards a target point with a bounded force: what the viewer uses to
   * drag bodies with the mouse. Not part of the original SiMS.
@@ -57,7 +55,10 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
 
   checkNodes()
 
-  private val point = Anchor(node2, anchor)
+  /** The grabbed point on the dragged body (the soft step reads it too). */
+  private[sims] val attachment = Anchor(node2, anchor)
+  // The classic step's arm of the grabbed point.
+  private val point = attachment.arm()
 
   /** The anchors and placements this joint was made from (for saving a world). */
   private[sims] val origin: JointOrigin = JointOrigin(node1, anchor, node2, anchor)
@@ -158,72 +159,5 @@ final class MouseJoint(body: Body, anchor: Vector2D, val maxForce: Double) exten
       b.impulseAt(impulseX - oldX, impulseY - oldY, rx, ry)
 
   def correctPosition(h: Double): Unit = ()
-
-  // ---- Soft step: the same soft point constraint, with the soft step's own formulation of
-  // the spring (SOFTSTEP.md section 3, stiffness `frequency` and `dampingRatio`, which needs no
-  // scaling by the mass), in both passes of every substep; the force stays within maxForce,
-  // and the body's rotation is damped once per substep.
-
-  private val accumulated = new Array[Double](2)
-  private val softness = Softness()
-  private var index = 0
-  private var startArmX, startArmY = 0.0
-  private var maxImpulse = 0.0
-  private var armX, armY = 0.0 // current, set by `armSoft`
-
-  override private[sims] def softImpulse: Array[Double] = accumulated
-  override private[sims] def softForces: Boolean = false
-
-  override private[sims] def prepareSoft(context: SoftContext): Unit =
-    index = node2.index
-    point.update()
-    startArmX = point.armX
-    startArmY = point.armY
-    softness.set(_frequency, _dampingRatio, context.h)
-    // The accumulated impulse is re-applied in every substep (warm starting): it is the force
-    // times one substep, bounded by maxForce times the substep.
-    maxImpulse = maxForce * context.h
-    clampAccumulated()
-
-  private def clampAccumulated(): Unit =
-    val size = math.sqrt(accumulated(0) * accumulated(0) + accumulated(1) * accumulated(1))
-    if size > maxImpulse then
-      accumulated(0) *= maxImpulse / size
-      accumulated(1) *= maxImpulse / size
-
-  private def armSoft(state: Array[Double]): Unit =
-    val k = index * SoftBodies.Stride
-    armX = state(k + TurnCos) * startArmX - state(k + TurnSin) * startArmY
-    armY = state(k + TurnSin) * startArmX + state(k + TurnCos) * startArmY
-
-  override private[sims] def warmStartSoft(context: SoftContext): Unit =
-    val bodies = context.bodies
-    if bodies.invMass(index) != 0 then
-      armSoft(bodies.state)
-      bodies.applyImpulse(index, accumulated(0), accumulated(1), armX, armY)
-
-  override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
-    val bodies = context.bodies
-    val m = bodies.invMass(index)
-    if m != 0 then // a fixed body cannot be dragged
-      val state = bodies.state
-      val k = index * SoftBodies.Stride
-      if useBias then state(k + AngularVelocity) /= 1 + context.h * _angularDamping
-      armSoft(state)
-      val i = bodies.invI(index)
-      val cX = bodies.startX(index) + state(k + ShiftX) + armX - _target.x
-      val cY = bodies.startY(index) + state(k + ShiftY) + armY - _target.y
-      val rightX = state(k + VelocityX) - state(k + AngularVelocity) * armY + softness.biasRate * cX
-      val rightY = state(k + VelocityY) + state(k + AngularVelocity) * armX + softness.biasRate * cY
-      val k11 = m + i * armY * armY
-      val k12 = -i * armX * armY
-      val k22 = m + i * armX * armX
-      val determinant = k11 * k22 - k12 * k12
-      val oldX = accumulated(0)
-      val oldY = accumulated(1)
-      accumulated(0) += -softness.massScale * (k22 * rightX - k12 * rightY) / determinant - softness.impulseScale * oldX
-      accumulated(1) += -softness.massScale * (k11 * rightY - k12 * rightX) / determinant - softness.impulseScale * oldY
-      clampAccumulated()
-      bodies.applyImpulse(index, accumulated(0) - oldX, accumulated(1) - oldY, armX, armY)
 
   override def toString: String = s"MouseJoint($node2, target = $_target, maxForce = $maxForce)"

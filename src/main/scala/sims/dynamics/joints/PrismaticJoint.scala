@@ -2,8 +2,6 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
-import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
-import sims.solver.soft.SoftBodies.*
 
 /** Lets body 2 slide along a line fixed on body 1, without turning relative to it.
   *
@@ -34,15 +32,20 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
   if anchor1 == anchor2 then
     throw IllegalArgumentException(s"anchor1 and anchor2 must differ to give the line a direction, both are $anchor1")
 
-  private val point1 = Anchor(node1, anchor1)
-  private val point2 = Anchor(node2, anchor2)
+  /** The line's anchor on node1 and the sliding anchor on node2 (the soft step reads them too). */
+  private[sims] val attachment1 = Anchor(node1, anchor1)
+  private[sims] val attachment2 = Anchor(node2, anchor2)
+  // The classic step's arms of the anchors.
+  private val point1 = attachment1.arm()
+  private val point2 = attachment2.arm()
 
   /** The anchors and placements this joint was made from (for saving a world). */
   private[sims] val origin: JointOrigin = JointOrigin(node1, anchor1, node2, anchor2)
   // Direction of the line in body 1's own frame.
   private val localAxis = (anchor2 - anchor1).unit.rotate(-node1.rotation)
-  private val localAxisX = localAxis.x
-  private val localAxisY = localAxis.y
+  /** The line's direction in body 1's own frame, x and y (the soft step reads them too). */
+  private[sims] val localAxisX = localAxis.x
+  private[sims] val localAxisY = localAxis.y
 
   /** Relative rotation `node2.rotation - node1.rotation` that the joint keeps: its value at creation. */
   val referenceAngle: Double = node2.rotation - node1.rotation
@@ -83,24 +86,12 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     angular1 = reachX * normalY - reachY * normalX
     angular2 = point2.armX * normalY - point2.armY * normalX
 
-  // The solution of the last `solve`: fields rather than an object, so iterations allocate nothing.
-  private var lineImpulse, turnImpulse = 0.0
+  // The classic step's 2x2 system (see PrismaticMatrix).
+  private val matrix = PrismaticMatrix()
 
-  /** Solves K lambda = (lineRight, turnRight) for the geometry set by `prepare()`, K as in the
-    * derivation; lambda = 0 when K is singular (both bodies fixed).
-    */
+  /** Solves K lambda = (lineRight, turnRight) for the geometry set by `prepare()`. */
   private def solve(lineRight: Double, turnRight: Double): Unit =
-    val invI1 = node1.invI
-    val invI2 = node2.invI
-    val coupling = invI1 * angular1 + invI2 * angular2
-    val k11 = node1.invMass + node2.invMass + invI1 * angular1 * angular1 + invI2 * angular2 * angular2
-    val k22 = invI1 + invI2
-    val determinant = k11 * k22 - coupling * coupling
-    if determinant == 0 then
-      lineImpulse = 0; turnImpulse = 0
-    else
-      lineImpulse = (k22 * lineRight - coupling * turnRight) / determinant
-      turnImpulse = (k11 * turnRight - coupling * lineRight) / determinant
+    matrix.solve(node1.invMass, node1.invI, node2.invMass, node2.invI, angular1, angular2, lineRight, turnRight)
 
   def correctVelocity(h: Double): Unit =
     prepare()
@@ -109,14 +100,14 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val lineSpeed = normalX * (b2.vx - b1.vx) + normalY * (b2.vy - b1.vy) + angular2 * b2.w - angular1 * b1.w
     val turnSpeed = b2.w - b1.w
     solve(-lineSpeed, -turnSpeed)
-    val px = normalX * lineImpulse
-    val py = normalY * lineImpulse
+    val px = normalX * matrix.lineImpulse
+    val py = normalY * matrix.lineImpulse
     b1.vx -= px * b1.invMass
     b1.vy -= py * b1.invMass
-    b1.w -= (angular1 * lineImpulse + turnImpulse) * b1.invI
+    b1.w -= (angular1 * matrix.lineImpulse + matrix.turnImpulse) * b1.invI
     b2.vx += px * b2.invMass
     b2.vy += py * b2.invMass
-    b2.w += (angular2 * lineImpulse + turnImpulse) * b2.invI
+    b2.w += (angular2 * matrix.lineImpulse + matrix.turnImpulse) * b2.invI
 
   def correctPosition(h: Double): Unit =
     prepare()
@@ -125,105 +116,9 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     val lineError = normalX * (point2.x - point1.x) + normalY * (point2.y - point1.y)
     val angleError = b2.angle - b1.angle - referenceAngle
     solve(-lineError, -angleError)
-    val px = normalX * lineImpulse
-    val py = normalY * lineImpulse
-    b1.displace(-px * b1.invMass, -py * b1.invMass, -(angular1 * lineImpulse + turnImpulse) * b1.invI)
-    b2.displace(px * b2.invMass, py * b2.invMass, (angular2 * lineImpulse + turnImpulse) * b2.invI)
-
-  // ---- Soft step: the same two rows, C = (n . d, theta2 - theta1 - theta0), with K at the
-  // current geometry (arms and n at the start of the step turned by the bodies' rotations
-  // since), solved as a soft constraint (SOFTSTEP.md section 3).
-
-  private val accumulated = new Array[Double](2) // line, turn
-  private val ends = SoftAnchors()
-  private var startNormalX, startNormalY = 0.0
-
-  override private[sims] def softImpulse: Array[Double] = accumulated
-
-  override private[sims] def prepareSoft(context: SoftContext): Unit =
-    prepare()
-    ends.start(context.bodies, node1.index, node2.index, point1.armX, point1.armY, point2.armX, point2.armY)
-    startNormalX = normalX; startNormalY = normalY
-
-  // The current line error, set by `measureSoft` with the normal and angular terms.
-  private var lineErrorSoft = 0.0
-
-  /** Sets n, a1 and a2 (the fields `prepare()` sets in the classic step) and the line error
-    * from the bodies' motion since the step began.
-    */
-  private def measureSoft(state: Array[Double]): Unit =
-    ends.measure(state)
-    // The normal turns with body 1.
-    val s1 = ends.index1 * SoftBodies.Stride
-    val c1 = state(s1 + TurnCos); val sn1 = state(s1 + TurnSin)
-    normalX = c1 * startNormalX - sn1 * startNormalY
-    normalY = sn1 * startNormalX + c1 * startNormalY
-    // d + r1 = p2 - x1
-    val reachX = ends.centresX + ends.arm2X
-    val reachY = ends.centresY + ends.arm2Y
-    angular1 = reachX * normalY - reachY * normalX
-    angular2 = ends.arm2X * normalY - ends.arm2Y * normalX
-    lineErrorSoft = normalX * (reachX - ends.arm1X) + normalY * (reachY - ends.arm1Y)
-
-  /** Applies the line impulse `line` and the turn impulse `turn` to both bodies. */
-  private def applySoft(bodies: SoftBodies, line: Double, turn: Double): Unit =
-    val state = bodies.state
-    val index1 = ends.index1
-    val index2 = ends.index2
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
-    val px = normalX * line
-    val py = normalY * line
-    state(s1 + VelocityX) -= px * bodies.invMass(index1)
-    state(s1 + VelocityY) -= py * bodies.invMass(index1)
-    state(s1 + AngularVelocity) -= (angular1 * line + turn) * bodies.invI(index1)
-    state(s2 + VelocityX) += px * bodies.invMass(index2)
-    state(s2 + VelocityY) += py * bodies.invMass(index2)
-    state(s2 + AngularVelocity) += (angular2 * line + turn) * bodies.invI(index2)
-
-  override private[sims] def directRows: Int = 2
-
-  override private[sims] def rowsSoft(context: SoftContext, rows: JointRows): Unit =
-    val bodies = context.bodies
-    val state = bodies.state
-    measureSoft(state)
-    val index1 = ends.index1
-    val index2 = ends.index2
-    val angleError = (bodies.startAngle(index2) + state(index2 * SoftBodies.Stride + Turn)) -
-      (bodies.startAngle(index1) + state(index1 * SoftBodies.Stride + Turn)) - referenceAngle
-    rows.count = 2
-    rows.set(0, -normalX, -normalY, -angular1, normalX, normalY, angular2, lineErrorSoft)
-    rows.set(1, 0, 0, -1, 0, 0, 1, angleError)
-
-  override private[sims] def warmStartSoft(context: SoftContext): Unit =
-    measureSoft(context.bodies.state)
-    applySoft(context.bodies, accumulated(0), accumulated(1))
-
-  override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
-    val bodies = context.bodies
-    val state = bodies.state
-    measureSoft(state)
-    val index1 = ends.index1
-    val index2 = ends.index2
-    val s1 = index1 * SoftBodies.Stride
-    val s2 = index2 * SoftBodies.Stride
-    var lineRight = normalX * (state(s2 + VelocityX) - state(s1 + VelocityX)) + normalY * (state(s2 + VelocityY) - state(s1 + VelocityY)) +
-      angular2 * state(s2 + AngularVelocity) - angular1 * state(s1 + AngularVelocity)
-    var turnRight = state(s2 + AngularVelocity) - state(s1 + AngularVelocity)
-    var massScale = 1.0
-    var impulseScale = 0.0
-    if useBias then
-      val softness = context.jointSoftness
-      val angleError = (bodies.startAngle(index2) + state(s2 + Turn)) - (bodies.startAngle(index1) + state(s1 + Turn)) - referenceAngle
-      lineRight += softness.biasRate * lineErrorSoft
-      turnRight += softness.biasRate * angleError
-      massScale = softness.massScale
-      impulseScale = softness.impulseScale
-    solve(lineRight, turnRight)
-    val line = -massScale * lineImpulse - impulseScale * accumulated(0)
-    val turn = -massScale * turnImpulse - impulseScale * accumulated(1)
-    accumulated(0) += line
-    accumulated(1) += turn
-    applySoft(bodies, line, turn)
+    val px = normalX * matrix.lineImpulse
+    val py = normalY * matrix.lineImpulse
+    b1.displace(-px * b1.invMass, -py * b1.invMass, -(angular1 * matrix.lineImpulse + matrix.turnImpulse) * b1.invI)
+    b2.displace(px * b2.invMass, py * b2.invMass, (angular2 * matrix.lineImpulse + matrix.turnImpulse) * b2.invI)
 
   override def toString: String = s"PrismaticJoint($node1, $node2, axis = $axis)"

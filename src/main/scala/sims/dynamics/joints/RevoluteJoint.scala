@@ -2,8 +2,6 @@ package sims.dynamics.joints
 
 import sims.dynamics.Body
 import sims.geometry.Vector2D
-import sims.solver.soft.{JointRows, SoftAnchors, SoftBodies, SoftContext}
-import sims.solver.soft.SoftBodies.*
 
 /** Pins two bodies together at one point; they may turn freely about it (a hinge).
   *
@@ -31,8 +29,12 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   checkNodes()
   Vector2D.requireFinite("anchor", anchor)
 
-  private val point1 = Anchor(node1, anchor)
-  private val point2 = Anchor(node2, anchor)
+  /** The pin's point on each body (the soft step reads them too). */
+  private[sims] val attachment1 = Anchor(node1, anchor)
+  private[sims] val attachment2 = Anchor(node2, anchor)
+  // The classic step's arms of the pin's points.
+  private val point1 = attachment1.arm()
+  private val point2 = attachment2.arm()
 
   /** The anchors and placements this joint was made from (for saving a world). */
   private[sims] val origin: JointOrigin = JointOrigin(node1, anchor, node2, anchor)
@@ -46,37 +48,15 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   /** How far apart the pin's points on the two bodies are now (0 when the joint holds), m. */
   def separation: Double = (connection2 - connection1).length
 
-  // The last 2x2 system set up by `effectiveMassMatrix` (row by row) and the solution of the
-  // last `solve`: fields rather than objects, so the iterations allocate nothing.
-  private var k11, k12, k21, k22 = 0.0
-  private var solutionX, solutionY = 0.0
+  // The classic step's 2x2 system (see PinMatrix).
+  private val matrix = PinMatrix()
 
-  /** Sets (k11 k12; k21 k22) to the change of the pin points' relative velocity per unit
-    * impulse, when the impulse acts at arms (b1x, b1y), (b2x, b2y) and the pin points are at
-    * arms (a1x, a1y), (a2x, a2y):
-    * (1/m1 + 1/m2) E + sum over both bodies of 1/I [a.y b.y, -a.y b.x; -a.x b.y, a.x b.x].
-    * With a = b this is the symmetric K of the derivation. Returns its determinant.
+  /** The pin's K for arms (a1x, a1y) to the pin points and (b1x, b1y) where the impulse acts
+    * (see `PinMatrix.setUp`); returns its determinant.
     */
   private def effectiveMassMatrix(a1x: Double, a1y: Double, b1x: Double, b1y: Double,
       a2x: Double, a2y: Double, b2x: Double, b2y: Double): Double =
-    val invMass = node1.invMass + node2.invMass
-    val invI1 = node1.invI
-    val invI2 = node2.invI
-    k11 = invMass + invI1 * a1y * b1y + invI2 * a2y * b2y
-    k12 = -invI1 * a1y * b1x - invI2 * a2y * b2x
-    k21 = -invI1 * a1x * b1y - invI2 * a2x * b2y
-    k22 = invMass + invI1 * a1x * b1x + invI2 * a2x * b2x
-    k11 * k22 - k12 * k21
-
-  /** Solves K P = (bx, by) for the matrix last set up, with its determinant; P = 0 when K is
-    * singular (both bodies fixed).
-    */
-  private def solve(determinant: Double, bx: Double, by: Double): Unit =
-    if determinant == 0 then
-      solutionX = 0; solutionY = 0
-    else
-      solutionX = (k22 * bx - k12 * by) / determinant
-      solutionY = (k11 * by - k21 * bx) / determinant
+    matrix.setUp(node1.invMass, node1.invI, node2.invMass, node2.invI, a1x, a1y, b1x, b1y, a2x, a2y, b2x, b2y)
 
   def correctVelocity(h: Double): Unit =
     point1.update()
@@ -105,13 +85,13 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
       // The matrix fields hold the mixed matrix now: set up the textbook one again.
       effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
         point2.armX, point2.armY, point2.armX, point2.armY)
-      solve(textbook, -cdotX, -cdotY)
-      b1.impulseAt(-solutionX, -solutionY, point1.armX, point1.armY)
-      b2.impulseAt(solutionX, solutionY, point2.armX, point2.armY)
+      matrix.solve(textbook, -cdotX, -cdotY)
+      b1.impulseAt(-matrix.solutionX, -matrix.solutionY, point1.armX, point1.armY)
+      b2.impulseAt(matrix.solutionX, matrix.solutionY, point2.armX, point2.armY)
     else
-      solve(mixed, -cdotX, -cdotY)
-      b1.impulseAt(-solutionX, -solutionY, m1x, m1y)
-      b2.impulseAt(solutionX, solutionY, m2x, m2y)
+      matrix.solve(mixed, -cdotX, -cdotY)
+      b1.impulseAt(-matrix.solutionX, -matrix.solutionY, m1x, m1y)
+      b2.impulseAt(matrix.solutionX, matrix.solutionY, m2x, m2y)
 
   def correctPosition(h: Double): Unit =
     point1.update()
@@ -122,80 +102,11 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     val cY = point2.y - point1.y
     val determinant = effectiveMassMatrix(point1.armX, point1.armY, point1.armX, point1.armY,
       point2.armX, point2.armY, point2.armX, point2.armY)
-    solve(determinant, -cX, -cY)
+    matrix.solve(determinant, -cX, -cY)
     // r x P for each body, with the arms taken before either body moves.
-    val turn1 = point1.armX * solutionY - point1.armY * solutionX
-    val turn2 = point2.armX * solutionY - point2.armY * solutionX
-    b1.displace(-solutionX * b1.invMass, -solutionY * b1.invMass, -turn1 * b1.invI)
-    b2.displace(solutionX * b2.invMass, solutionY * b2.invMass, turn2 * b2.invI)
-
-  // ---- Soft step: the point constraint C = p2 - p1 (the pin's points: their arms at the start
-  // of the step turned by each body's rotation since), with Cdot and the impulses at the middle
-  // of p1 and p2 and K for those arms, solved as a soft constraint (SOFTSTEP.md section 3):
-  // lambda = -massScale K^-1 (Cdot + biasRate C) - impulseScale lambdaAcc.
-
-  private val accumulated = new Array[Double](2)
-  private val pin = SoftAnchors()
-  // Set by `armsSoft`: the pin's error C = p2 - p1, and the arms from each centre to the middle
-  // of p1 and p2, where both impulses act (as in the classic step: impulses at two points an
-  // open pin apart would form a couple and change the angular momentum; measured 0.4% over
-  // two seconds in a free pair before this).
-  private var errorX, errorY, arm1X, arm1Y, arm2X, arm2Y = 0.0
-
-  override private[sims] def softImpulse: Array[Double] = accumulated
-
-  override private[sims] def prepareSoft(context: SoftContext): Unit =
-    point1.update()
-    point2.update()
-    pin.start(context.bodies, node1.index, node2.index, point1.armX, point1.armY, point2.armX, point2.armY)
-
-  private def armsSoft(state: Array[Double]): Unit =
-    pin.measure(state)
-    errorX = pin.centresX + pin.arm2X - pin.arm1X
-    errorY = pin.centresY + pin.arm2Y - pin.arm1Y
-    // The middle is p1 + C / 2 from body 1's centre, p2 - C / 2 from body 2's.
-    arm1X = pin.arm1X + 0.5 * errorX; arm1Y = pin.arm1Y + 0.5 * errorY
-    arm2X = pin.arm2X - 0.5 * errorX; arm2Y = pin.arm2Y - 0.5 * errorY
-
-  override private[sims] def directRows: Int = 2
-
-  override private[sims] def rowsSoft(context: SoftContext, rows: JointRows): Unit =
-    armsSoft(context.bodies.state)
-    rows.count = 2
-    rows.set(0, -1, 0, arm1Y, 1, 0, -arm2Y, errorX)
-    rows.set(1, 0, -1, -arm1X, 0, 1, arm2X, errorY)
-
-  override private[sims] def warmStartSoft(context: SoftContext): Unit =
-    val bodies = context.bodies
-    armsSoft(bodies.state)
-    bodies.applyImpulse(pin.index1, -accumulated(0), -accumulated(1), arm1X, arm1Y)
-    bodies.applyImpulse(pin.index2, accumulated(0), accumulated(1), arm2X, arm2Y)
-
-  override private[sims] def solveSoft(context: SoftContext, useBias: Boolean): Unit =
-    val bodies = context.bodies
-    val state = bodies.state
-    armsSoft(state)
-    val s1 = pin.index1 * SoftBodies.Stride
-    val s2 = pin.index2 * SoftBodies.Stride
-    val cdotX = state(s2 + VelocityX) - state(s2 + AngularVelocity) * arm2Y - state(s1 + VelocityX) + state(s1 + AngularVelocity) * arm1Y
-    val cdotY = state(s2 + VelocityY) + state(s2 + AngularVelocity) * arm2X - state(s1 + VelocityY) - state(s1 + AngularVelocity) * arm1X
-    var rightX = cdotX
-    var rightY = cdotY
-    var massScale = 1.0
-    var impulseScale = 0.0
-    if useBias then
-      val softness = context.jointSoftness
-      rightX += softness.biasRate * errorX
-      rightY += softness.biasRate * errorY
-      massScale = softness.massScale
-      impulseScale = softness.impulseScale
-    val determinant = effectiveMassMatrix(arm1X, arm1Y, arm1X, arm1Y, arm2X, arm2Y, arm2X, arm2Y)
-    solve(determinant, rightX, rightY)
-    val impulseX = -massScale * solutionX - impulseScale * accumulated(0)
-    val impulseY = -massScale * solutionY - impulseScale * accumulated(1)
-    accumulated(0) += impulseX
-    accumulated(1) += impulseY
-    bodies.applyImpulse(pin.index1, -impulseX, -impulseY, arm1X, arm1Y)
-    bodies.applyImpulse(pin.index2, impulseX, impulseY, arm2X, arm2Y)
+    val turn1 = point1.armX * matrix.solutionY - point1.armY * matrix.solutionX
+    val turn2 = point2.armX * matrix.solutionY - point2.armY * matrix.solutionX
+    b1.displace(-matrix.solutionX * b1.invMass, -matrix.solutionY * b1.invMass, -turn1 * b1.invI)
+    b2.displace(matrix.solutionX * b2.invMass, matrix.solutionY * b2.invMass, turn2 * b2.invI)
 
   override def toString: String = s"RevoluteJoint($node1, $node2, anchor = $anchor)"

@@ -28,8 +28,8 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
   def this(node1: Body, node2: Body, springConstant: Double) =
     this(node1, node1.pos, node2, node2.pos, springConstant)
 
-  private val a1 = Anchor(node1, anchor1)
-  private val a2 = Anchor(node2, anchor2)
+  private val a1 = Anchor(node1, anchor1).arm()
+  private val a2 = Anchor(node2, anchor2).arm()
 
   /** The anchors and placements this joint was made from (for saving a world). */
   private[sims] val origin: JointOrigin = JointOrigin(node1, anchor1, node2, anchor2)
@@ -82,9 +82,6 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
   def correctVelocity(h: Double): Unit = ()
 
   def correctPosition(h: Double): Unit = ()
-
-  /** Soft step: nothing to solve; the force is applied in every substep instead. */
-  override private[sims] def solveSoft(context: sims.solver.soft.SoftContext, useBias: Boolean): Unit = ()
 
   override def toString: String =
     s"SpringJoint($node1, $node2, springConstant = $springConstant, initialLength = $initialLength)"

@@ -1,13 +1,11 @@
 package sims.solver.soft
 
-import scala.collection.mutable.ArrayBuffer
-import sims.dynamics.World
-import sims.dynamics.joints.{ForceJoint, Joint}
+import sims.solver.soft.joints.SoftJoints
 import sims.solver.soft.SoftBodies.*
 
-/** What the soft step keeps for one world: the bodies' arrays, the contact table (carried from
-  * step to step), the collision stage, the joints of the current step and the softness
-  * coefficients.
+/** What the soft step keeps for one world: the bodies' arrays, the contact table and the joints'
+  * constraints with their impulses (both carried from step to step), the collision stage and the
+  * softness coefficients.
   */
 private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
   /** The bodies during a step. */
@@ -20,40 +18,8 @@ private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
   val context: SoftContext = SoftContext()
   /** The contacts' softness for the step. */
   val stiffness: ContactStiffness = ContactStiffness()
-  /** The joints solved as constraints, and those whose forces are applied in each substep. */
-  val constraintJoints, forceJoints: ArrayBuffer[Joint] = ArrayBuffer.empty[Joint]
-  /** The direct solver of joint trees, and the joints left to the iterative one. */
-  val trees: JointTrees = JointTrees()
-  /** Indices of the bodies the force joints act on, each once. */
-  val forceBodies: ArrayBuffer[Int] = ArrayBuffer.empty[Int]
-  private var forceBodyStamp = new Array[Int](0)
-  private var stamp = 0
-
-  /** Sorts the world's joints into force joints, joint trees (when `direct`) and the joints
-    * solved iteratively, for this step.
-    */
-  def sortJoints(world: World, direct: Boolean): Unit =
-    constraintJoints.clear()
-    forceJoints.clear()
-    forceBodies.clear()
-    stamp += 1
-    if forceBodyStamp.length < world.bodyList.length then forceBodyStamp = new Array[Int](2 * world.bodyList.length)
-    val joints = world.jointList
-    var i = 0
-    while i < joints.length do
-      val j = joints(i)
-      if j.softForces && j.isInstanceOf[ForceJoint] then
-        forceJoints += j
-        markForceBody(j.node1.index)
-        markForceBody(j.node2.index)
-      else constraintJoints += j
-      i += 1
-    if direct then trees.build(constraintJoints, bodies) else trees.keepIterative(constraintJoints)
-
-  private def markForceBody(index: Int): Unit =
-    if index >= 0 && forceBodyStamp(index) != stamp then
-      forceBodyStamp(index) = stamp
-      forceBodies += index
+  /** The joints: their constraints, this step's force joints and joint trees. */
+  val joints: SoftJoints = SoftJoints()
 
   // The committed contacts when the step under way began: a failed step that already
   // committed its contacts swaps the generations back.
@@ -93,7 +59,24 @@ private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
         separations, column(NormalImpulse), column(TangentImpulse), column(TotalNormalImpulse))
     }
 
-  def copyState(): AnyRef = table.copyCommitted()
-  def restoreState(saved: AnyRef): Unit = table.restoreCommitted(saved.asInstanceOf[Contacts])
-  def beginStep(): Unit = committedAtStart = table.committed
-  def undoStep(): Unit = if table.committed ne committedAtStart then table.uncommit()
+  def copyState(): AnyRef = SoftWorkspace.Saved(table.copyCommitted(), joints.copyImpulses())
+
+  def restoreState(saved: AnyRef): Unit = saved match
+    case s: SoftWorkspace.Saved =>
+      table.restoreCommitted(s.contacts)
+      joints.restoreImpulses(s.impulses)
+    case _ =>
+      table.restoreCommitted(null)
+      joints.restoreImpulses(null)
+
+  def beginStep(): Unit =
+    committedAtStart = table.committed
+    joints.beginStep()
+
+  def undoStep(): Unit =
+    if table.committed ne committedAtStart then table.uncommit()
+    joints.undoStep()
+
+private[sims] object SoftWorkspace:
+  /** A snapshot's copy of what the soft step carries: the committed contacts and the joints' impulses. */
+  final class Saved(val contacts: Contacts, val impulses: SoftJoints.Saved)

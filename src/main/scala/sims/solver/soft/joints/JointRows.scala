@@ -1,4 +1,4 @@
-package sims.solver.soft
+package sims.solver.soft.joints
 
 /** One joint's rows at the current substep, as a joint gives them to the direct solver
   * ([[JointTrees]]): for each row r (at most two), the Jacobian's three entries (vx, vy, w) for

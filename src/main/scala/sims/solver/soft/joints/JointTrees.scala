@@ -1,7 +1,7 @@
-package sims.solver.soft
+package sims.solver.soft.joints
 
 import scala.collection.mutable.ArrayBuffer
-import sims.dynamics.joints.Joint
+import sims.solver.soft.{SmallMatrix, SoftBodies, SoftContext}
 import sims.solver.soft.SoftBodies.*
 
 /** The soft step's direct solver for joints that form trees (a chain, a pendulum, a ragdoll):
@@ -26,8 +26,8 @@ import sims.solver.soft.SoftBodies.*
   */
 private[sims] final class JointTrees:
   /** The joints of this step left to the iterative solver, in world order. */
-  val iterative: ArrayBuffer[Joint] = ArrayBuffer.empty[Joint]
-  private val direct = ArrayBuffer.empty[Joint]
+  val iterative: ArrayBuffer[JointConstraint] = ArrayBuffer.empty[JointConstraint]
+  private val direct = ArrayBuffer.empty[JointConstraint]
   private val rows = JointRows()
   // Per direct joint t: its moving bodies (-1 when fixed), its bodies' indices (fixed ones
   // too: a fixed body may move at a given velocity), rows, Jacobians (k x 3 each) and errors.
@@ -54,7 +54,7 @@ private[sims] final class JointTrees:
   private var jointSeen = new Array[Boolean](0)
 
   /** Sorts this step's constraint joints into trees (solved here) and the rest. */
-  def build(joints: ArrayBuffer[Joint], bodies: SoftBodies): Unit =
+  def build(joints: ArrayBuffer[JointConstraint], bodies: SoftBodies): Unit =
     direct.clear()
     iterative.clear()
     val n = bodies.count
@@ -66,19 +66,19 @@ private[sims] final class JointTrees:
     // Components of the moving bodies joined by joints that give rows.
     var j = 0
     while j < joints.length do
-      val joint = joints(j)
-      if joint.directRows > 0 then
-        val a = moving(joint.node1, bodies)
-        val b = moving(joint.node2, bodies)
+      val constraint = joints(j)
+      if constraint.directRows > 0 then
+        val a = moving(constraint.joint.node1, bodies)
+        val b = moving(constraint.joint.node2, bodies)
         if a >= 0 && b >= 0 then unionParent(find(a)) = find(b)
       j += 1
     // Per component (at its root): bodies + joints - 1 must equal the body-joint edges.
     j = 0
     while j < joints.length do
-      val joint = joints(j)
-      if joint.directRows > 0 then
-        val a = moving(joint.node1, bodies)
-        val b = moving(joint.node2, bodies)
+      val constraint = joints(j)
+      if constraint.directRows > 0 then
+        val a = moving(constraint.joint.node1, bodies)
+        val b = moving(constraint.joint.node2, bodies)
         val some = if a >= 0 then a else b
         if some >= 0 then
           val root = find(some)
@@ -92,18 +92,18 @@ private[sims] final class JointTrees:
     // singular pivot), so a tree holds at most one; it becomes the tree's root.
     j = 0
     while j < joints.length do
-      val joint = joints(j)
-      val a = moving(joint.node1, bodies)
-      val b = moving(joint.node2, bodies)
+      val constraint = joints(j)
+      val a = moving(constraint.joint.node1, bodies)
+      val b = moving(constraint.joint.node2, bodies)
       val some = if a >= 0 then a else b
-      if joint.directRows > 0 && some >= 0 && bodyJoints(find(some)) == 1 && groundJoints(find(some)) <= 1 then
-        direct += joint
-      else iterative += joint
+      if constraint.directRows > 0 && some >= 0 && bodyJoints(find(some)) == 1 && groundJoints(find(some)) <= 1 then
+        direct += constraint
+      else iterative += constraint
       j += 1
     layOut(bodies)
 
   /** Leaves every joint to the iterative solver. */
-  def keepIterative(joints: ArrayBuffer[Joint]): Unit =
+  def keepIterative(joints: ArrayBuffer[JointConstraint]): Unit =
     direct.clear()
     iterative.clear()
     iterative ++= joints
@@ -134,10 +134,10 @@ private[sims] final class JointTrees:
       positionError = new Array[Double](4 * joints)
     var t = 0
     while t < joints do
-      body1(t) = moving(direct(t).node1, bodies)
-      body2(t) = moving(direct(t).node2, bodies)
-      index1(t) = direct(t).node1.index
-      index2(t) = direct(t).node2.index
+      body1(t) = moving(direct(t).joint.node1, bodies)
+      body2(t) = moving(direct(t).joint.node2, bodies)
+      index1(t) = direct(t).joint.node1.index
+      index2(t) = direct(t).joint.node2.index
       rowCount(t) = direct(t).directRows
       t += 1
     // Incidence lists of the bodies (joints in order), in compressed arrays.
@@ -223,7 +223,7 @@ private[sims] final class JointTrees:
   def warmStart(context: SoftContext): Unit =
     var t = 0
     while t < direct.length do
-      direct(t).warmStartSoft(context)
+      direct(t).warmStart(context)
       t += 1
 
   /** One exact pass over every tree: with the bias C / h (`useBias`) or without. */
@@ -232,7 +232,7 @@ private[sims] final class JointTrees:
       val state = context.bodies.state
       var t = 0
       while t < direct.length do
-        direct(t).rowsSoft(context, rows)
+        direct(t).rowsAt(context, rows)
         System.arraycopy(rows.jacobian1, 0, jacobian1, 6 * t, 6)
         System.arraycopy(rows.jacobian2, 0, jacobian2, 6 * t, 6)
         positionError(2 * t) = rows.positionError(0)
@@ -245,7 +245,7 @@ private[sims] final class JointTrees:
       var node = 0
       while node < nodeCount do
         if nodeIsJoint(node) then
-          val accumulated = direct(nodeRef(node)).softImpulse
+          val accumulated = direct(nodeRef(node)).impulse
           var r = 0
           while r < nodeSize(node) do
             accumulated(r) -= x(3 * node + r)

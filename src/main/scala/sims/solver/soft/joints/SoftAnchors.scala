@@ -1,5 +1,6 @@
-package sims.solver.soft
+package sims.solver.soft.joints
 
+import sims.solver.soft.SoftBodies
 import sims.solver.soft.SoftBodies.*
 
 /** A joint's two attachment points as the soft step moves them within a step, the part every

@@ -1,0 +1,56 @@
+package sims.solver.soft.joints
+
+import sims.dynamics.joints.{DistanceJoint, ForceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint}
+import sims.solver.soft.SoftContext
+
+/** A joint as the soft step solves it (SOFTSTEP.md section 3): the joint says what is
+  * constrained (its anchors, its settings); its constraint here does the soft step's work on
+  * it, each stage a method, as Box2D keeps one file per joint with its prepare and solve
+  * functions. The constraint owns everything the soft step keeps for its joint: the impulses it
+  * accumulates (warm started from step to step) and its geometry during a step, so the classic
+  * step's fields and these are never the same.
+  *
+  * @param joint the joint this constrains
+  * @param rows the number of rows of the constraint: its accumulated impulses, one per row
+  */
+private[sims] abstract class JointConstraint(val joint: Joint, rows: Int):
+  /** The impulses accumulated so far, one per row: carried to the next step (warm starting). */
+  val impulse: Array[Double] = new Array[Double](rows)
+
+  /** Takes what stays fixed during the step, with the bodies at their placements at its start. */
+  def prepare(context: SoftContext): Unit
+
+  /** The number of rows this constraint gives the direct solver of joint trees (`rowsAt`), or 0
+    * when it is solved iteratively by `solve` only.
+    */
+  def directRows: Int = 0
+
+  /** The constraint's rows at the current substep, for the direct solver. */
+  def rowsAt(context: SoftContext, rows: JointRows): Unit = ()
+
+  /** Applies the impulses accumulated so far. */
+  def warmStart(context: SoftContext): Unit
+
+  /** One pass of the constraint, with the soft bias (`useBias`, the solve pass) or without (the
+    * relax pass).
+    */
+  def solve(context: SoftContext, useBias: Boolean): Unit
+
+/** The soft step's table of joint kinds. */
+private[sims] object JointConstraint:
+  /** The soft constraint of `joint`, or null for a force joint (a spring: its forces are applied
+    * in every substep instead). A joint of a kind the table does not know (a user's own) is
+    * solved by its classic velocity correction ([[ClassicConstraint]]).
+    */
+  def of(joint: Joint): JointConstraint = joint match
+    case j: DistanceJoint => DistanceConstraint(j)
+    case j: RevoluteJoint => RevoluteConstraint(j)
+    case j: PrismaticJoint => PrismaticConstraint(j)
+    case j: MouseJoint => MouseConstraint(j)
+    case _: ForceJoint => null
+    case j => ClassicConstraint(j)
+
+  /** The number of impulses `joint`'s constraint carries (0 for a force joint). */
+  def rowsOf(joint: Joint): Int =
+    val c = of(joint)
+    if c == null then 0 else c.impulse.length
