@@ -1,6 +1,7 @@
 package sims.collision
 
-import sims.dynamics.{Circle, RoundedSegment, Shape}
+import sims.collision.narrowphase.PairFunctions
+import sims.dynamics.{RoundedSegment, Shape}
 import sims.geometry.{ConvexPolygon, PolygonMath, Segment}
 
 /** How far apart two shapes of the built-in kinds are, and along which direction: the contact
@@ -30,38 +31,21 @@ private[sims] final class ShapeSeparation:
     true
 
   /** Turns the normal round (for a pair measured the other way). */
-  private def flip(): Boolean =
+  private[collision] def flip(): Boolean =
     normalX = -normalX
     normalY = -normalY
     true
 
-  /** Measures `a` against `b` into `distance`, `normalX` and `normalY`; false (and nothing
-    * changed) when either is not one of the built-in kinds (circle, convex polygon, capsule or edge).
+  /** Measures `a` against `b` into `distance`, `normalX` and `normalY` through the pair's entry
+    * of the narrowphase registry; false (and nothing changed) when either is not one of the
+    * built-in kinds (circle, convex polygon, capsule or edge).
     */
   def measure(a: Shape, b: Shape): Boolean =
-    a match
-      case ca: Circle =>
-        b match
-          case cb: Circle => points(ca.x, ca.y, ca.radius, cb.x, cb.y, cb.radius)
-          case sb: RoundedSegment => segmentPoint(sb, ca.x, ca.y, ca.radius) && flip()
-          case pb: ConvexPolygon => polygonPoint(pb, ca.x, ca.y, ca.radius) && flip()
-          case _ => false
-      case sa: RoundedSegment =>
-        b match
-          case cb: Circle => segmentPoint(sa, cb.x, cb.y, cb.radius)
-          case sb: RoundedSegment => segments(sa, sb)
-          case pb: ConvexPolygon => polygonSegment(pb, sa) && flip()
-          case _ => false
-      case pa: ConvexPolygon =>
-        b match
-          case cb: Circle => polygonPoint(pa, cb.x, cb.y, cb.radius)
-          case sb: RoundedSegment => polygonSegment(pa, sb)
-          case pb: ConvexPolygon => polygons(pa, pb)
-          case _ => false
-      case _ => false
+    val functions = PairFunctions.of(a, b)
+    functions != null && functions.separation(a, b, this)
 
   /** Two discs: the line through their centres. */
-  private def points(ax: Double, ay: Double, ra: Double, bx: Double, by: Double, rb: Double): Boolean =
+  private[collision] def points(ax: Double, ay: Double, ra: Double, bx: Double, by: Double, rb: Double): Boolean =
     val dx = bx - ax
     val dy = by - ay
     val d = math.sqrt(dx * dx + dy * dy)
@@ -70,7 +54,7 @@ private[sims] final class ShapeSeparation:
   /** A polygon and a disc of centre (cx, cy): inside, the side of least depth; outside, the
     * nearest point of the outline.
     */
-  private def polygonPoint(polygon: ConvexPolygon, cx: Double, cy: Double, radius: Double): Boolean =
+  private[collision] def polygonPoint(polygon: ConvexPolygon, cx: Double, cy: Double, radius: Double): Boolean =
     val xs = polygon.vertexXs
     val ys = polygon.vertexYs
     val nxs = polygon.sideNormalXs
@@ -87,7 +71,7 @@ private[sims] final class ShapeSeparation:
       set(d - radius, dx / d, dy / d)
 
   /** A capsule's core and a disc of centre (cx, cy). */
-  private def segmentPoint(segment: RoundedSegment, cx: Double, cy: Double, radius: Double): Boolean =
+  private[collision] def segmentPoint(segment: RoundedSegment, cx: Double, cy: Double, radius: Double): Boolean =
     val xs = segment.coreXs
     val ys = segment.coreYs
     closestOnSegment(xs(0), ys(0), xs(1), ys(1), cx, cy)
@@ -100,7 +84,7 @@ private[sims] final class ShapeSeparation:
   /** Two convex polygons: apart, the closest pair of a vertex and a side; overlapping, the
     * side normal of least depth (separating axes).
     */
-  private def polygons(a: ConvexPolygon, b: ConvexPolygon): Boolean =
+  private[collision] def polygons(a: ConvexPolygon, b: ConvexPolygon): Boolean =
     val axs = a.vertexXs; val ays = a.vertexYs
     val bxs = b.vertexXs; val bys = b.vertexYs
     axis(axs, ays, a.sideNormalXs, a.sideNormalYs, bxs, bys)
@@ -113,7 +97,7 @@ private[sims] final class ShapeSeparation:
     else set(axisGap, -axisX, -axisY)
 
   /** A polygon and a capsule: its core counts as a polygon of two vertices, grown by its radius. */
-  private def polygonSegment(polygon: ConvexPolygon, segment: RoundedSegment): Boolean =
+  private[collision] def polygonSegment(polygon: ConvexPolygon, segment: RoundedSegment): Boolean =
     val pxs = polygon.vertexXs; val pys = polygon.vertexYs
     val sxs = segment.coreXs; val sys = segment.coreYs
     axis(pxs, pys, polygon.sideNormalXs, polygon.sideNormalYs, sxs, sys)
@@ -125,7 +109,7 @@ private[sims] final class ShapeSeparation:
     else set(axisGap - segment.radius, -axisX, -axisY)
 
   /** Two capsules' cores: apart, their closest points; crossing, the core normal of least depth. */
-  private def segments(a: RoundedSegment, b: RoundedSegment): Boolean =
+  private[collision] def segments(a: RoundedSegment, b: RoundedSegment): Boolean =
     val axs = a.coreXs; val ays = a.coreYs
     val bxs = b.coreXs; val bys = b.coreYs
     val radii = a.radius + b.radius

@@ -1,6 +1,6 @@
 package sims.collision.narrowphase
 
-import sims.collision.{CapsuleCollision, CircleCollision, Collision, PolyCircleCollision, PolyCollision}
+import sims.collision.Collision
 import sims.dynamics.{Circle, RoundedSegment, Shape}
 import sims.geometry.ConvexPolygon
 
@@ -29,37 +29,10 @@ private[sims] object BuiltInMethods:
     case ShapeKind.Polygon => shape.isInstanceOf[ConvexPolygon]
     case ShapeKind.Capsule => shape.isInstanceOf[RoundedSegment]
 
-  private type Polygon = Shape & ConvexPolygon
-
-  val circleCircleTest = Test(PairKind.CircleCircle,
-    (a, b) => CircleCollision.colliding(a.asInstanceOf[Circle], b.asInstanceOf[Circle]))
-  val polygonPolygonTest = Test(PairKind.PolygonPolygon,
-    (a, b) => PolyCollision.colliding(a.asInstanceOf[Polygon], b.asInstanceOf[Polygon]))
-  val polygonCircleTest = Test(PairKind.PolygonCircle,
-    (a, b) => PolyCircleCollision.colliding(a.asInstanceOf[Polygon], b.asInstanceOf[Circle]))
-  val circlePolygonTest = Test(PairKind.CirclePolygon,
-    (a, b) => PolyCircleCollision.colliding(b.asInstanceOf[Polygon], a.asInstanceOf[Circle]))
-
-  val circleCircleCollision = Make(PairKind.CircleCircle,
-    (a, b) => CircleCollision(a.asInstanceOf[Circle], b.asInstanceOf[Circle]))
-  val polygonPolygonCollision = Make(PairKind.PolygonPolygon,
-    (a, b) => PolyCollision(a.asInstanceOf[Polygon], b.asInstanceOf[Polygon]))
-  val polygonCircleCollision = Make(PairKind.PolygonCircle,
-    (a, b) => PolyCircleCollision(a.asInstanceOf[Polygon], b.asInstanceOf[Circle]))
-  val circlePolygonCollision = Make(PairKind.CirclePolygon,
-    (a, b) => PolyCircleCollision(b.asInstanceOf[Polygon], a.asInstanceOf[Circle]))
-
-  /** The kinds with a capsule or an edge: one test and one constructor serve them all. */
-  private val capsuleKinds = Seq(PairKind.CapsuleCircle, PairKind.CircleCapsule, PairKind.CapsuleCapsule,
-    PairKind.PolygonCapsule, PairKind.CapsulePolygon)
-  val capsuleTests: Seq[Test] = capsuleKinds.map(Test(_, CapsuleCollision.colliding))
-  val capsuleCollisions: Seq[Make] = capsuleKinds.map(Make(_, CapsuleCollision(_, _)))
-
-  /** The tests, in the order the detector's list starts with. */
-  def tests: Seq[PartialFunction[(Shape, Shape), Boolean]] =
-    Seq(circleCircleTest, polygonPolygonTest, polygonCircleTest, circlePolygonTest) ++ capsuleTests
+  /** The tests, in the order the detector's list starts with: the registry's, by pair kind. */
+  val tests: Seq[PartialFunction[(Shape, Shape), Boolean]] =
+    PairKind.values.toSeq.map(k => Test(k, PairFunctions.of(k).colliding))
 
   /** The collision constructors, in the order the detector's list starts with. */
-  def collisions: Seq[PartialFunction[(Shape, Shape), Collision]] =
-    Seq(circleCircleCollision, polygonPolygonCollision, polygonCircleCollision, circlePolygonCollision) ++
-      capsuleCollisions
+  val collisions: Seq[PartialFunction[(Shape, Shape), Collision]] =
+    PairKind.values.toSeq.map(k => Make(k, PairFunctions.of(k).collision))

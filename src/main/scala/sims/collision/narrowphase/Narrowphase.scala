@@ -1,21 +1,22 @@
 package sims.collision.narrowphase
 
 import scala.collection.mutable.ArrayBuffer
-import sims.collision.{CapsuleCollision, CircleCollision, Collision, PolyCircleCollision, PolyCollision}
-import sims.collision.manifold.Manifold
-import sims.dynamics.{Circle, Shape}
-import sims.geometry.ConvexPolygon
+import sims.collision.Collision
+import sims.dynamics.Shape
 
-/** The second stage of collision detection: for each candidate pair, whether its shapes collide
-  * and their [[Collision]] (SPEC section 4).
+/** The second stage of collision detection: for each candidate pair, which methods its shapes'
+  * classes have, and, for the classic step, whether they collide and their [[Collision]] (SPEC
+  * section 4).
   *
   * The detector's `detectionMethods` and `collisionMethods` lists are the extension point. They
   * fill this table: a map from a pair of shape classes to the first test and the first
   * constructor defined for it, resolved once per class pair (so a method must be defined or not
   * by the shapes' classes alone, as type patterns are) and dropped whenever a list changes.
-  * When both chosen methods are the same built-in [[PairKind]], the narrowphase calls its
-  * function directly and refills the pair slot's reusable collision object instead of going
-  * through the partial functions, and reuses the slot's last result while neither body moved.
+  * When both chosen methods are the same built-in [[PairKind]], the pair is resolved into the
+  * registry's entry of that kind ([[PairFunctions]]), which both steps use: the classic step
+  * calls it directly and refills the pair slot's reusable collision object instead of going
+  * through the partial functions, and reuses the slot's last result while neither body moved;
+  * the soft step takes its manifold.
   */
 private[sims] final class Narrowphase:
   import Narrowphase.*
@@ -50,6 +51,9 @@ private[sims] final class Narrowphase:
       while i < snapshot.length && (buffer(i).asInstanceOf[AnyRef] eq snapshot(i)) do i += 1
       i == snapshot.length
 
+  /** The classic objects lent to the pair slots (see [[CollisionPool]]). */
+  val pool: CollisionPool = CollisionPool()
+
   /** The collision of the pair in `slot` from the current positions, or null if its shapes do
     * not collide.
     */
@@ -57,8 +61,8 @@ private[sims] final class Narrowphase:
     val a = slot.first
     val b = slot.second
     val r = slot.methods
-    val kind = r.kind
-    if kind == null then collideGeneral(r, a, b)
+    val functions = r.functions
+    if functions == null then collideGeneral(r, a, b)
     else
       val placements1 = a.body.placements
       val placements2 = b.body.placements
@@ -66,13 +70,7 @@ private[sims] final class Narrowphase:
           slot.donePlacements2 == placements2 then
         slot.result
       else
-        val c = kind match
-          case PairKind.CircleCircle => circleCircle(slot, a.asInstanceOf[Circle], b.asInstanceOf[Circle])
-          case PairKind.PolygonPolygon => polygonPolygon(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Polygon])
-          case PairKind.PolygonCircle => polygonCircle(slot, a.asInstanceOf[Polygon], b.asInstanceOf[Circle])
-          case PairKind.CirclePolygon => polygonCircle(slot, b.asInstanceOf[Polygon], a.asInstanceOf[Circle])
-          case PairKind.CapsuleCircle | PairKind.CapsuleCapsule | PairKind.PolygonCapsule => capsule(slot, a, b)
-          case PairKind.CircleCapsule | PairKind.CapsulePolygon => capsule(slot, b, a)
+        val c = functions.collide(slot, a, b, pool)
         slot.doneFirst = a
         slot.doneSecond = b
         slot.donePlacements1 = placements1
@@ -80,74 +78,10 @@ private[sims] final class Narrowphase:
         slot.result = c
         c
 
-  private def circleCircle(slot: PairSlot, c1: Circle, c2: Circle): Collision =
-    val distance = CircleCollision.centreDistance(c1, c2)
-    if !(distance - (c1.radius + c2.radius) <= 0) then null
-    else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
-    else { slot.circle.compute(c1, c2, distance); slot.circle }
-
-  private def polygonPolygon(slot: PairSlot, p1: Polygon, p2: Polygon): Collision =
-    val axis = PolyCollision.referenceAxisIfColliding(p1, p2)
-    if axis < 0 then { givePoly(slot); null }
-    else
-      if slot.poly == null then slot.poly = take(sparePolys)
-      if slot.poly == null then slot.poly = PolyCollision(p1, p2)
-      else slot.poly.compute(p1, p2, axis)
-      slot.poly
-
-  private def polygonCircle(slot: PairSlot, p: Polygon, c: Circle): Collision =
-    if !PolyCircleCollision.colliding(p, c) then { givePolyCircle(slot); null }
-    else
-      if slot.polyCircle == null then slot.polyCircle = take(sparePolyCircles)
-      if slot.polyCircle == null then slot.polyCircle = PolyCircleCollision(p, c)
-      else slot.polyCircle.compute(p, c)
-      slot.polyCircle
-
-  /** The contact of a pair with a capsule or an edge, `reference` first (see
-    * [[sims.collision.CapsuleCollision]]); each slot keeps its own object, as for circles.
-    */
-  private def capsule(slot: PairSlot, reference: Shape, incident: Shape): Collision =
-    if slot.capsule == null then slot.capsule = CapsuleCollision.empty()
-    if slot.capsule.compute(reference, incident, scratch) then slot.capsule else null
-
-  // The capsule kinds' manifold, filled and read at once by `capsule`.
-  private val scratch = Manifold()
-
-  // Collision objects of the polygon kinds that no slot holds, handed to the next slot that
-  // needs one. A slot gives its object back when its pair stops colliding or is of another kind
-  // (the circle kind stays with its slot: in a scene of circles nearly every slot soon has
-  // one, and handing them around would scatter them in memory). Contacts with polygons are
-  // often a minority that moves between slots as a scene changes; kept per slot, every slot
-  // would in time allocate its own.
-  private val sparePolyCircles = ArrayBuffer.empty[PolyCircleCollision]
-  private val sparePolys = ArrayBuffer.empty[PolyCollision]
-
   /** Gives back the slot's polygon-kind objects that its pair, of the given kind (null: a user
     * kind, or the slot holds no pair this step), does not use.
     */
-  def releaseUnused(slot: PairSlot, kind: PairKind): Unit =
-    if kind != PairKind.PolygonCircle && kind != PairKind.CirclePolygon then givePolyCircle(slot)
-    if kind != PairKind.PolygonPolygon then givePoly(slot)
-
-  private def givePolyCircle(slot: PairSlot): Unit =
-    if slot.polyCircle != null then
-      forget(slot, slot.polyCircle)
-      sparePolyCircles += slot.polyCircle
-      slot.polyCircle = null
-
-  private def givePoly(slot: PairSlot): Unit =
-    if slot.poly != null then
-      forget(slot, slot.poly)
-      sparePolys += slot.poly
-      slot.poly = null
-
-  /** A spare object, or null when there is none. */
-  private def take[C <: Collision](spares: ArrayBuffer[C]): C =
-    if spares.isEmpty then null.asInstanceOf[C] else spares.remove(spares.length - 1)
-
-  /** Drops the slot's last result if it is the object being given away. */
-  private def forget(slot: PairSlot, c: Collision): Unit =
-    if slot.result eq c then slot.invalidate()
+  def releaseUnused(slot: PairSlot, kind: PairKind): Unit = pool.releaseUnused(slot, kind)
 
   /** Whether `a` and `b` collide by the test `r` chose for their classes (no collision made). */
   def test(r: Resolved, a: Shape, b: Shape): Boolean =
@@ -194,7 +128,6 @@ private[sims] final class Narrowphase:
       r
 
 private[sims] object Narrowphase:
-  private type Polygon = Shape & ConvexPolygon
   private val RecentSize = 8
 
   /** The test and the constructor chosen for one pair of classes (the constructor may be
@@ -206,3 +139,5 @@ private[sims] object Narrowphase:
     val kind: PairKind = (test, make) match
       case (t: BuiltInMethods.Test, m: BuiltInMethods.Make) if t.kind == m.kind => t.kind
       case _ => null
+    /** The registry's entry of that kind, used by both steps and the queries; null for a user's kinds. */
+    val functions: PairFunctions = if kind == null then null else PairFunctions.of(kind)

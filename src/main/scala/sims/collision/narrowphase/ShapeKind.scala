@@ -31,3 +31,14 @@ private[sims] enum PairKind(val first: ShapeKind, val second: ShapeKind):
   case CapsuleCapsule extends PairKind(ShapeKind.Capsule, ShapeKind.Capsule)
   case PolygonCapsule extends PairKind(ShapeKind.Polygon, ShapeKind.Capsule)
   case CapsulePolygon extends PairKind(ShapeKind.Capsule, ShapeKind.Polygon)
+
+private[sims] object PairKind:
+  private val byKinds: Array[PairKind] =
+    val n = ShapeKind.values.length
+    val table = new Array[PairKind](n * n)
+    for k <- PairKind.values do table(k.first.ordinal * n + k.second.ordinal) = k
+    table
+
+  /** The pair of kinds (first, second), or null when either is null (a user kind). */
+  def of(first: ShapeKind, second: ShapeKind): PairKind =
+    if first == null || second == null then null else byKinds(first.ordinal * ShapeKind.values.length + second.ordinal)

@@ -3,11 +3,9 @@ package sims.solver.soft
 import sims.Defaults
 import sims.collision.{Collision, GridDetector, PairBuffer}
 import sims.collision.broadphase.UniformGrid
-import sims.collision.manifold.{CapsuleCircleManifold, CapsuleManifold, CircleManifold, Manifold, PolygonCircleManifold,
-  PolygonManifold}
-import sims.collision.narrowphase.{Narrowphase, PairKind}
-import sims.dynamics.{Circle, RoundedSegment, Shape, World}
-import sims.geometry.ConvexPolygon
+import sims.collision.manifold.Manifold
+import sims.collision.narrowphase.Narrowphase
+import sims.dynamics.{Shape, World}
 import sims.solver.soft.ContactTable.*
 import sims.solver.soft.SoftBodies.*
 
@@ -24,7 +22,8 @@ import sims.solver.soft.SoftBodies.*
   * boxes leans and falls within 10 s), and the narrowphase is skipped for resting contacts.
   * The idea is Box2D v3.2's "contact recycling" (after PhysX's persistent manifolds).
   *
-  * Pairs of the built-in kinds get the manifold functions of `sims.collision.manifold`; pairs
+  * Pairs of the built-in kinds get their manifold from the narrowphase registry's entry
+  * ([[sims.collision.narrowphase.PairFunctions]]); pairs
   * of a user's kinds go through the world's `GridDetector` lists (their `points` and `normal`,
   * the separation being minus the overlap of the shapes' projections on the normal, matched to
   * the last step's points by position). A world whose detector is not a `GridDetector` has all
@@ -59,16 +58,16 @@ private[sims] final class ContactFinder:
           val methods = narrowphase.resolve(a, b)
           val key = ContactTable.key(a, b)
           val last = table.lastOf(key)
-          methods.kind match
-            case null =>
-              val collision = narrowphase.collideGeneral(methods, a, b)
-              if collision != null then addCollision(table, collision, key, last)
-            case kind =>
-              if last >= 0 && persistence > 0 && keeps(table.committed, last, a, b, persistence) then keep(table, last, a, b, key)
-              else
-                builtIn(kind, a, b, if last >= 0 then table.committed.side(last) else -1,
-                  speculativeDistance + timeStep * approachBound(a.body.index, b.body.index), linearSlop)
-                if manifold.pointCount > 0 then addManifold(table, a, b, key, last)
+          val functions = methods.functions
+          if functions == null then
+            val collision = narrowphase.collideGeneral(methods, a, b)
+            if collision != null then addCollision(table, collision, key, last)
+          else if last >= 0 && persistence > 0 && keeps(table.committed, last, a, b, persistence) then
+            keep(table, last, a, b, key)
+          else
+            functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
+              speculativeDistance + timeStep * approachBound(a.body.index, b.body.index), linearSlop, manifold)
+            if manifold.pointCount > 0 then addManifold(table, a, b, key, last)
           i += 1
       case detector =>
         detector.detect()
@@ -94,31 +93,6 @@ private[sims] final class ContactFinder:
     val dvy = state(sB + VelocityY) - state(sA + VelocityY)
     math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + AngularVelocity)) * bodies.bodies(a).extent +
       math.abs(state(sB + AngularVelocity)) * bodies.bodies(b).extent
-
-  /** Fills the manifold of a pair of built-in kinds. */
-  private def builtIn(kind: PairKind, a: Shape, b: Shape, lastSide: Int, speculativeDistance: Double, linearSlop: Double): Unit =
-    kind match
-      case PairKind.CircleCircle =>
-        CircleManifold.collide(a.asInstanceOf[Circle], b.asInstanceOf[Circle], speculativeDistance, manifold)
-      case PairKind.PolygonPolygon =>
-        PolygonManifold.collide(a.asInstanceOf[Polygon], b.asInstanceOf[Polygon], speculativeDistance, linearSlop, manifold)
-      case PairKind.PolygonCircle =>
-        PolygonCircleManifold.collide(a.asInstanceOf[Polygon], b.asInstanceOf[Circle], lastSide, speculativeDistance, manifold)
-      case PairKind.CirclePolygon =>
-        PolygonCircleManifold.collide(a.asInstanceOf[Circle], b.asInstanceOf[Polygon], lastSide, speculativeDistance, manifold)
-      case PairKind.CapsuleCircle =>
-        CapsuleCircleManifold.collide(a.asInstanceOf[RoundedSegment], b.asInstanceOf[Circle], speculativeDistance, manifold)
-      case PairKind.CircleCapsule =>
-        CapsuleCircleManifold.collide(a.asInstanceOf[Circle], b.asInstanceOf[RoundedSegment], speculativeDistance, manifold)
-      case PairKind.CapsuleCapsule =>
-        CapsuleManifold.collide(a.asInstanceOf[RoundedSegment], b.asInstanceOf[RoundedSegment], speculativeDistance,
-          linearSlop, manifold)
-      case PairKind.PolygonCapsule =>
-        PolygonManifold.collide(a.asInstanceOf[Polygon], b.asInstanceOf[RoundedSegment], speculativeDistance, linearSlop,
-          manifold)
-      case PairKind.CapsulePolygon =>
-        PolygonManifold.collide(a.asInstanceOf[RoundedSegment], b.asInstanceOf[Polygon], speculativeDistance, linearSlop,
-          manifold)
 
   /** Appends the manifold of shapes (a, b) as a contact, warm started from the last step's
     * contact `last` (or -1) point by point through the feature ids.
@@ -325,4 +299,3 @@ private object ContactFinder:
     val a2 = a * a
     1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30))
 
-private type Polygon = Shape & ConvexPolygon
