@@ -1,8 +1,7 @@
 package sims.collision
 
 import scala.collection.mutable.ArrayBuffer
-import sims.collision.broadphase.UniformGrid
-import sims.collision.narrowphase.{BuiltInMethods, Narrowphase}
+import sims.collision.narrowphase.BuiltInMethods
 import sims.dynamics.{Shape, World}
 
 /** The default detector (documentation 5.3): a uniform-grid broadphase followed by a
@@ -21,26 +20,29 @@ import sims.dynamics.{Shape, World}
   * pattern matches on types are).
   */
 class GridDetector(val world: World) extends Detector:
-  private val grid = UniformGrid()
-  private val narrowphase = Narrowphase()
-  private val pairs = PairBuffer()
+  // The world's broadphase, pairs and narrowphase, which the soft step and the queries share.
+  private def stages = world.collisionPipeline
+  private def pairs = stages.pairs
+  private def narrowphase = stages.narrowphase
   private val found = ArrayBuffer.empty[Collision]
+  private var _gridSide = sims.Defaults.GridSide
+  private var _maxPairs = sims.Defaults.MaxCandidatePairs
 
   /** Side of a grid cell in m (default 2). */
-  def gridSide: Double = grid.gridSide
+  def gridSide: Double = _gridSide
 
   /** Sets the cell side; must be positive and finite. */
-  def gridSide_=(side: Double): Unit = grid.gridSide = side
+  def gridSide_=(side: Double): Unit = _gridSide = Shape.requirePositive("gridSide", side)
 
   /** The most candidate pairs a step may have (default [[sims.Defaults.MaxCandidatePairs]]); a
     * step with more fails, changing nothing, with an IllegalStateException naming this limit.
     */
-  def maxPairs: Int = pairs.limit
+  def maxPairs: Int = _maxPairs
 
   /** Sets the limit of candidate pairs per step; must be at least 1. */
   def maxPairs_=(limit: Int): Unit =
     if limit < 1 then throw IllegalArgumentException(s"maxPairs must be at least 1, got $limit")
-    pairs.limit = limit
+    _maxPairs = limit
 
   /** Collision tests, tried in order; append methods for new shape types. */
   val detectionMethods: ArrayBuffer[PartialFunction[(Shape, Shape), Boolean]] =
@@ -52,14 +54,15 @@ class GridDetector(val world: World) extends Detector:
 
   def collisions: collection.IndexedSeq[Collision] = found
 
-  /** The candidate pairs of the last `detect()`: (first, second) shapes, in order. */
+  /** The candidate pairs of the last step's broadphase (this detector's last `detect()` under
+    * the classic step): (first, second) shapes, in order.
+    */
   def candidatePairs: IndexedSeq[(Shape, Shape)] =
     IndexedSeq.tabulate(pairs.size)(i => (pairs.first(i), pairs.second(i)))
 
   def detect(): Unit =
-    pairs.clear()
-    grid.update(world.shapeBuffer, 0)
-    grid.findPairs(pairs)
+    stages.findPairs(world.shapeBuffer, _gridSide, _maxPairs, "GridDetector.maxPairs", margin = 0, sweep = 0,
+      inGridOrder = true)
     narrowphase.update(detectionMethods, collisionMethods)
     resolvePairs()
     refresh()

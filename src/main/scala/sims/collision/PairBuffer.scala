@@ -15,6 +15,9 @@ private[sims] final class PairBuffer:
   /** The most pairs one step may have (see [[sims.Defaults.MaxCandidatePairs]]). */
   var limit: Int = sims.Defaults.MaxCandidatePairs
 
+  /** The setting that raises `limit`, for the error (the classic detector's or the soft step's). */
+  var limitName: String = "GridDetector.maxPairs"
+
   /** Number of pairs. */
   def size: Int = count
   /** Number of slots made so far (slots 0 until `created` exist; those from `size` on are idle). */
@@ -32,7 +35,7 @@ private[sims] final class PairBuffer:
   def add(a: Shape, b: Shape): Unit =
     if count == limit then
       throw IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
-        "GridDetector.maxPairs): are many shapes piled at one place? Raise maxPairs if the scene really " +
+        s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
         "has that many overlapping bounds")
     if count == slots.length then slots = java.util.Arrays.copyOf(slots, count * 2)
     var s = slots(count)

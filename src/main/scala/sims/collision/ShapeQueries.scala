@@ -6,25 +6,28 @@ import sims.collision.broadphase.{Broadphase, UniformGrid}
 import sims.dynamics.{Shape, World}
 import sims.geometry.{RayMath, Vector2D}
 
-/** The world's queries (`World.rayCast`, `rayCastAll`, `query`, `shapesAt`) through a grid
-  * broadphase of its own over every shape (collidable or not), so a query looks at the shapes
-  * near its box or ray only. The grid takes the shapes' bounds again at the first query after
-  * anything moved (the world says when: `stale`), so queries see the current positions
-  * whenever they are made; between moves, queries reuse it.
+/** The world's queries (`World.rayCast`, `rayCastAll`, `query`, `shapesAt`) through the world's
+  * broadphase, filled with every shape (collidable or not), so a query looks at the shapes near
+  * its box or ray only. The grid takes the shapes' bounds again at the first query after
+  * anything moved or a step used the grid (the world says when: `stale`), so queries see the
+  * current positions whenever they are made; between moves, queries reuse it.
   */
 private[sims] final class ShapeQueries(world: World):
-  private val grid = UniformGrid()
-
-  /** Set by the world whenever a shape may have moved, joined or left since the grid was made. */
+  /** Set by the world whenever a shape may have moved, joined or left, or a step used the grid,
+    * since the grid last took every shape's bounds for the queries.
+    */
   var stale: Boolean = true
 
   private def fresh(): UniformGrid =
-    if stale then
+    val stages = world.collisionPipeline
+    val grid = stages.broadphase
+    if stale || !stages.holdsQueryBounds then
       grid.gridSide = world.detector match
         case detector: GridDetector => detector.gridSide
         case _ => Defaults.GridSide
       grid.update(world.shapeBuffer, 0, 0, everyShape = true)
       stale = false
+      stages.holdsQueryBounds = true
     grid
 
   /** The nearest hit of the segment from `from` to `to` among the shapes `filter` accepts. */

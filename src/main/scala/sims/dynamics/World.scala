@@ -2,7 +2,7 @@ package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
-import sims.collision.{Collision, Contact, ContactEvents, Detector, GridDetector, PairTracker, RayHit, SensorEvents,
+import sims.collision.{Collision, CollisionPipeline, Contact, ContactEvents, Detector, GridDetector, PairTracker, RayHit, SensorEvents,
   SensorOverlaps, ShapeQueries}
 import sims.dynamics.joints.{Joint, SpringJoint}
 import sims.geometry.{AABB, Vector2D}
@@ -37,6 +37,11 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   private val beforeStep = WorldState.empty
   // Per-world data of the solvers this world has stepped with (see `workspace`).
   private val workspaces = ArrayBuffer.empty[AnyRef]
+
+  /** The world's one broadphase, list of candidate pairs and narrowphase, shared by both steps
+    * and the queries (made before the detector, which uses them).
+    */
+  private[sims] val collisionPipeline: CollisionPipeline = CollisionPipeline()
 
   /** The collision detector used by `step()`. */
   val detector: Detector = makeDetector(this)

@@ -28,9 +28,10 @@ import sims.dynamics.World
 object WorldCodec:
   /** The version of the format `save` writes; `load` reads this one and every earlier one
     * (version 1 had no capsules, edges, hull polygons, filter bits or `collideConnected`;
-    * version 2 no sensors, bullets or open event pairs).
+    * version 2 no sensors, bullets or open event pairs; version 3 no broadphase settings of the
+    * soft step's own: it used the detector's).
     */
-  val FormatVersion: Int = 3
+  val FormatVersion: Int = 4
 
   /** The bytes of `world`'s state; fails with an IllegalArgumentException naming a type it cannot
     * save.

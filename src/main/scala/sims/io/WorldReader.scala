@@ -26,7 +26,7 @@ private[io] object WorldReader:
       if version < 1 || version > WorldCodec.FormatVersion then
         throw IllegalArgumentException(s"a saved world of format version $version; this library reads versions " +
           s"1 to ${WorldCodec.FormatVersion}")
-      settings(in, world)
+      settings(in, world, version)
       val bodies = IndexedSeq.fill(in.readInt())(body(in, version))
       bodies.foreach(world += _)
       val shapes = world.shapes
@@ -40,7 +40,7 @@ private[io] object WorldReader:
       case e: EOFException => throw IllegalArgumentException("the saved world is cut short", e)
       case e: IndexOutOfBoundsException => throw IllegalArgumentException("the saved world refers to a missing body or shape", e)
 
-  private def settings(in: DataInputStream, world: World): Unit =
+  private def settings(in: DataInputStream, world: World, version: Int): Unit =
     world.timeStep = in.readDouble()
     world.iterations = in.readInt()
     world.gravity = Vector2D(in.readDouble(), in.readDouble())
@@ -58,7 +58,13 @@ private[io] object WorldReader:
       case SoftSolver =>
         val substeps = in.readInt()
         val d = Array.fill(11)(in.readDouble())
-        SoftStep(substeps, d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7), d(8), d(9), d(10), in.readBoolean())
+        val directJoints = in.readBoolean()
+        // Version 4 gave the soft step its own broadphase settings; before, it used the detector's.
+        val (gridSide, maxPairs) = world.detector match
+          case grid: GridDetector if version < 4 => (grid.gridSide, grid.maxPairs)
+          case _ => (in.readDouble(), in.readInt())
+        SoftStep(substeps, d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7), d(8), d(9), d(10), directJoints, gridSide,
+          maxPairs)
       case tag => throw IllegalArgumentException(s"unknown solver tag $tag in the saved world")
 
   private def body(in: DataInputStream, version: Int): Body =

@@ -56,6 +56,8 @@ private[io] object WorldWriter:
             soft.jointDampingRatio, soft.contactSpeed, soft.restitutionThreshold, soft.linearSlop,
             soft.speculativeDistance, soft.contactPersistence, soft.contactLoadDepth) do out.writeDouble(d)
         out.writeBoolean(soft.directJoints)
+        out.writeDouble(soft.gridSide)
+        out.writeInt(soft.maxPairs)
       case other => unsupported("solver", other)
 
   private def body(out: DataOutputStream, b: Body): Unit =
@@ -151,11 +153,15 @@ private[io] object WorldWriter:
           out.writeInt(shapeIndex(table.shapeB(c)))
           out.writeInt(table.pointCount(c))
           out.writeInt(table.ids(2 * c))
-          out.writeInt(table.ids(2 * c + 1))
+          out.writeInt(if table.pointCount(c) > 1 then table.ids(2 * c + 1) else 0)
           out.writeInt(table.side(c))
           val hot = table.offset(c)
           for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do out.writeDouble(table.hot(hot + k))
-          for k <- 0 until ContactTable.ColdStride do out.writeDouble(table.cold(c * ContactTable.ColdStride + k))
+          // A contact has room for two points (ids, cold block); the slots of a missing one hold
+          // whatever an earlier contact left there. Written as zeros: the same world, the same bytes.
+          val used = ContactTable.ColdHeader + table.pointCount(c) * ContactTable.ColdPoint
+          for k <- 0 until ContactTable.ColdStride do
+            out.writeDouble(if k < used then table.cold(c * ContactTable.ColdStride + k) else 0.0)
 
   /** The soft step's data of `world`, if it has stepped with the soft step. */
   private def softWorkspace(world: World): Option[SoftWorkspace] =

@@ -47,6 +47,10 @@ import sims.solver.soft.SoftBodies.*
   * @param directJoints whether joints that form trees (chains, ragdolls) are solved exactly by
   *   the linear-time direct solver, as rigid constraints; otherwise every joint is solved by
   *   soft Gauss-Seidel sweeps with `jointHertz`, as in Box2D v3
+  * @param gridSide side of the broadphase's grid cells, m (the world's one broadphase, which the
+  *   classic step uses with its detector's `gridSide`)
+  * @param maxPairs the most candidate pairs a step may have; a step with more fails, changing
+  *   nothing, with an IllegalStateException naming this limit
   */
 final case class SoftStep(
     substeps: Int = Defaults.Substeps,
@@ -61,7 +65,9 @@ final case class SoftStep(
     speculativeDistance: Double = Defaults.SpeculativeDistance,
     contactPersistence: Double = Defaults.ContactPersistence,
     contactLoadDepth: Double = Defaults.ContactLoadDepth,
-    directJoints: Boolean = true) extends Solver:
+    directJoints: Boolean = true,
+    gridSide: Double = Defaults.GridSide,
+    maxPairs: Int = Defaults.MaxCandidatePairs) extends Solver:
   if substeps < 1 then throw IllegalArgumentException(s"substeps must be at least 1, got $substeps")
   SoftStep.requirePositive("contactHertz", contactHertz)
   SoftStep.requireNonNegative("contactDampingRatio", contactDampingRatio)
@@ -74,6 +80,8 @@ final case class SoftStep(
   SoftStep.requireNonNegative("speculativeDistance", speculativeDistance)
   SoftStep.requireNonNegative("contactPersistence", contactPersistence)
   SoftStep.requireNonNegative("contactLoadDepth", contactLoadDepth)
+  SoftStep.requirePositive("gridSide", gridSide)
+  if maxPairs < 1 then throw IllegalArgumentException(s"maxPairs must be at least 1, got $maxPairs")
 
   def step(world: World): Unit =
     val workspace = world.workspace(classOf[SoftWorkspace], SoftWorkspace())
@@ -139,7 +147,8 @@ final case class SoftStep(
 
   private def findContacts(world: World, workspace: SoftWorkspace): Unit =
     if world.enableCollisionDetection then
-      workspace.finder.find(world, workspace.table, workspace.bodies, speculativeDistance, linearSlop, contactPersistence)
+      workspace.finder.find(world, workspace.table, workspace.bodies, gridSide, maxPairs, speculativeDistance, linearSlop,
+        contactPersistence)
     else workspace.table.begin()
 
   private def prepare(workspace: SoftWorkspace, h: Double): Unit =

@@ -1,10 +1,8 @@
 package sims.solver.soft
 
 import sims.Defaults
-import sims.collision.{Collision, GridDetector, PairBuffer}
-import sims.collision.broadphase.UniformGrid
+import sims.collision.{Collision, GridDetector}
 import sims.collision.manifold.Manifold
-import sims.collision.narrowphase.Narrowphase
 import sims.dynamics.{Shape, World}
 import sims.solver.soft.ContactTable.*
 import sims.solver.soft.SoftBodies.*
@@ -30,26 +28,25 @@ import sims.solver.soft.SoftBodies.*
   * its contacts from its detector's `collisions`, treated as user kinds.
   */
 private[sims] final class ContactFinder:
-  private val grid = UniformGrid()
-  private val pairs = PairBuffer()
-  private val narrowphase = Narrowphase()
   private val manifold = Manifold()
   private var bodies: SoftBodies = null
   private var timeStep = 0.0
 
-  /** Fills `table.current` with this step's contacts of `world`, whose bodies `bodies` holds. */
-  def find(world: World, table: ContactTable, bodies: SoftBodies, speculativeDistance: Double, linearSlop: Double,
-      persistence: Double): Unit =
+  /** Fills `table.current` with this step's contacts of `world`, whose bodies `bodies` holds,
+    * with the world's broadphase in cells of `gridSide` and at most `maxPairs` candidate pairs.
+    */
+  def find(world: World, table: ContactTable, bodies: SoftBodies, gridSide: Double, maxPairs: Int,
+      speculativeDistance: Double, linearSlop: Double, persistence: Double): Unit =
     this.bodies = bodies
     timeStep = world.timeStep
     table.begin()
     world.detector match
       case detector: GridDetector =>
-        grid.gridSide = detector.gridSide
-        pairs.limit = detector.maxPairs
-        grid.update(world.shapeBuffer, speculativeDistance, timeStep, everyShape = false)
-        pairs.clear()
-        grid.findPairs(pairs, inGridOrder = false)
+        val stages = world.collisionPipeline
+        stages.findPairs(world.shapeBuffer, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance, timeStep,
+          inGridOrder = false)
+        val pairs = stages.pairs
+        val narrowphase = stages.narrowphase
         narrowphase.update(detector.detectionMethods, detector.collisionMethods)
         var i = 0
         while i < pairs.size do

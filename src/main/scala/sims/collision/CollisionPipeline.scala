@@ -1,0 +1,40 @@
+package sims.collision
+
+import sims.collision.broadphase.UniformGrid
+import sims.collision.narrowphase.Narrowphase
+import sims.dynamics.Shape
+
+/** A world's collision stages, one of each, shared by both steps and the queries: the
+  * broadphase (the grid), the list of candidate pairs, and the narrowphase (the registry's
+  * entries resolved for the shape classes of the world's pairs, with the classic step's objects).
+  * Each user brings its own settings (the grid's cell side, the limit of pairs) to each use: the
+  * classic step its detector's ([[GridDetector]]), the soft step its own, the queries the
+  * detector's cell side.
+  */
+private[sims] final class CollisionPipeline:
+  /** The broadphase: whoever uses it last (a step, or a query) has its shapes' bounds in it. */
+  val broadphase: UniformGrid = UniformGrid()
+  /** The candidate pairs of the last step. */
+  val pairs: PairBuffer = PairBuffer()
+  /** The narrowphase's resolution of shape classes to the registry's entries and the methods lists. */
+  val narrowphase: Narrowphase = Narrowphase()
+
+  /** Whether the broadphase holds every shape's exact bounds for the queries (set by them),
+    * rather than a step's collidable shapes with its margins.
+    */
+  var holdsQueryBounds: Boolean = false
+
+  /** Replaces the candidate pairs with those of `shapes` (world order), their bounds enlarged by
+    * `margin` and by how far their bodies can move in `sweep` seconds, in cells of `gridSide`,
+    * in the grid's coarse order (`inGridOrder`, the SPEC's) or its own; fails past `maxPairs`
+    * pairs, naming `limitName`, the setting that raises it.
+    */
+  def findPairs(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
+      sweep: Double, inGridOrder: Boolean): Unit =
+    holdsQueryBounds = false
+    broadphase.gridSide = gridSide
+    pairs.limit = maxPairs
+    pairs.limitName = limitName
+    pairs.clear()
+    broadphase.update(shapes, margin, sweep, everyShape = false)
+    broadphase.findPairs(pairs, inGridOrder)
