@@ -2,8 +2,9 @@ package sims.collision
 
 import sims.dynamics.Shape
 
-/** The open pairs of a [[PairTracker]]: a hash table by open addressing from a pair's key to its
-  * two shapes and the step that last touched it. A key and its stamp share a cache line, so
+/** A table of pairs of shapes: a hash table by open addressing from a pair's key ([[PairKey]])
+  * to its two shapes and a stamp (for the open pairs of a [[PairTracker]], the step that last
+  * touched it; for the soft step's contact table, the index of the pair's contact). A key and its stamp share a cache line, so
   * touching a pair costs one probe; pairs leave by tombstone, so a scan over the slots may
   * remove what it visits. Slot order depends on the keys and on the order of changes only: what
   * the tracker reports from a scan it sorts by key, so nothing depends on it.

@@ -54,7 +54,7 @@ private[sims] final class PairTracker(ordered: Boolean):
     lastFlipped = !ordered && b.worldIndex < a.worldIndex
     val first = if lastFlipped then b else a
     val second = if lastFlipped then a else b
-    val key = keyOf(first, second)
+    val key = PairKey.of(first, second)
     val slot = open.find(key)
     if slot >= 0 then
       open.stamp(slot, stamp)
@@ -185,10 +185,6 @@ private[sims] object PairTracker:
 
   /** Open pairs sorted by key (see `openPairs`): a snapshot's copy, or the pairs touching now. */
   final class Saved(val keys: Array[Long], val first: Array[Shape], val second: Array[Shape])
-
-  /** The key of the pair (first, second): their join orders, the first's in the high half. */
-  def keyOf(first: Shape, second: Shape): Long =
-    (first.worldIndex.toLong << 32) | (second.worldIndex.toLong & 0xffffffffL)
 
   /** True if `shape` is in `world` still under the join order `index` (a shape that left and
     * joined again is another pair's).

@@ -1,7 +1,7 @@
 package sims.io
 
 import java.io.{ByteArrayInputStream, DataInputStream, EOFException}
-import sims.collision.{GridDetector, PairTracker}
+import sims.collision.{GridDetector, PairKey, PairTracker}
 import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
 import sims.geometry.Vector2D
@@ -186,7 +186,7 @@ private[io] object WorldReader:
     for i <- 0 until count do
       first(i) = shapes(in.readInt())
       second(i) = shapes(in.readInt())
-    PairTracker.Saved(Array.tabulate(count)(i => PairTracker.keyOf(first(i), second(i))), first, second)
+    PairTracker.Saved(Array.tabulate(count)(i => PairKey.of(first(i), second(i))), first, second)
 
   /** The soft step's committed contacts, keyed by the loaded shapes. */
   private def contacts(in: DataInputStream, world: World): Unit =
@@ -199,7 +199,7 @@ private[io] object WorldReader:
       table.shapeB(c) = b
       table.bodyA(c) = a.body.index
       table.bodyB(c) = b.body.index
-      table.keys(c) = ContactTable.key(a, b)
+      table.keys(c) = PairKey.of(a, b)
       table.ids(2 * c) = in.readInt()
       table.ids(2 * c + 1) = in.readInt()
       table.side(c) = in.readInt()

@@ -1,7 +1,7 @@
 package sims.solver.soft
 
 import sims.Defaults
-import sims.collision.{Collision, GridDetector}
+import sims.collision.{Collision, GridDetector, PairKey}
 import sims.collision.manifold.Manifold
 import sims.dynamics.{Shape, World}
 import sims.solver.soft.ContactTable.*
@@ -53,7 +53,7 @@ private[sims] final class ContactFinder:
           val a = pairs.first(i)
           val b = pairs.second(i)
           val methods = narrowphase.resolve(a, b)
-          val key = ContactTable.key(a, b)
+          val key = PairKey.of(a, b)
           val last = table.lastOf(key)
           val functions = methods.functions
           if functions == null then
@@ -72,7 +72,7 @@ private[sims] final class ContactFinder:
         var i = 0
         while i < collisions.length do
           val c = collisions(i)
-          val key = ContactTable.key(c.shape1, c.shape2)
+          val key = PairKey.of(c.shape1, c.shape2)
           addCollision(table, c, key, table.lastOf(key))
           i += 1
 

@@ -1,5 +1,6 @@
 package sims.solver.soft
 
+import sims.collision.PairTable
 import sims.dynamics.Shape
 
 /** The soft step's contacts: one record per touching (or nearly touching) pair of shapes, with
@@ -8,7 +9,7 @@ import sims.dynamics.Shape
   * Two generations are kept: the committed one (the last step's contacts, with the impulses
   * they ended with) and the one being built for this step. A new contact finds the last
   * step's record of the same shape pair through a table keyed by the pair (never by position
-  * in a list), and each new point takes over the impulses of the old point with the same
+  * in a list: [[sims.collision.PairKey]]), and each new point takes over the impulses of the old point with the same
   * feature id (warm starting). `commit()` makes the new generation the last step's; a step
   * that fails before it leaves the committed one as it was.
   */
@@ -19,23 +20,37 @@ private[sims] final class ContactTable:
   var current: Contacts = Contacts()
   /** The committed generation (the last step's contacts). */
   var committed: Contacts = Contacts()
-  private val index = PairIndex()
+  // The committed contacts by pair key (`PairKey`): the pair's slot holds its contact's index as
+  // its stamp.
+  private val index = new PairTable
 
   /** Starts building this step's contacts. */
   def begin(): Unit = current.clear()
 
   /** The committed contact of the shape pair `key`, or -1. */
-  def lastOf(key: Long): Int = index.get(key)
+  def lastOf(key: Long): Int =
+    val slot = index.find(key)
+    if slot >= 0 then index.stampAt(slot).toInt else -1
 
   /** Makes this step's contacts the last step's. */
   def commit(): Unit =
     val built = current
     current = committed
     committed = built
-    index.rebuild(committed.keys, committed.count)
+    indexCommitted()
 
   /** Makes the last step's contacts the committed ones again (a step failed after `commit`). */
   def uncommit(): Unit = commit()
+
+  private def indexCommitted(): Unit =
+    index.clear()
+    var c = 0
+    while c < committed.count do
+      // A pair listed twice (a user's detector may) finds its last contact, as it always has.
+      val slot = index.find(committed.keys(c))
+      if slot >= 0 then index.stamp(slot, c)
+      else index.insert(committed.keys(c), committed.shapeA(c), committed.shapeB(c), c)
+      c += 1
 
   /** A copy of the committed generation (for a snapshot of the world). */
   def copyCommitted(): Contacts = committed.copy()
@@ -43,12 +58,9 @@ private[sims] final class ContactTable:
   /** Puts back a copy taken by `copyCommitted` as the committed generation (null: none). */
   def restoreCommitted(saved: Contacts): Unit =
     committed = if saved == null then Contacts() else saved.copy()
-    index.rebuild(committed.keys, committed.count)
+    indexCommitted()
 
 private[sims] object ContactTable:
-  /** The key of the shape pair (a, b): their join orders, the first in the high half. */
-  def key(a: Shape, b: Shape): Long = (a.worldIndex.toLong << 32) | (b.worldIndex.toLong & 0xffffffffL)
-
   // A contact's hot block in `Contacts.hot`, at `offset(c)`: what the substeps read and write,
   // `Header` doubles, then `HotPoint` per point. Compact, because the substeps sweep it eight
   // times a step: a ball's contact (one point) is 20 doubles.
@@ -161,40 +173,3 @@ private[sims] final class Contacts:
     ids = java.util.Arrays.copyOf(ids, 2 * capacity); side = java.util.Arrays.copyOf(side, capacity)
     offset = java.util.Arrays.copyOf(offset, capacity)
     cold = java.util.Arrays.copyOf(cold, capacity * ColdStride)
-
-/** An open-addressing table from a pair key to a contact index; lookups depend on the key only,
-  * so the solver's results never depend on hash order.
-  */
-private[soft] final class PairIndex:
-  private var keys = new Array[Long](64)
-  private var values = new Array[Int](64)
-  private var used = new Array[Boolean](64)
-  private var mask = 63
-
-  /** The index stored for `key`, or -1. */
-  def get(key: Long): Int =
-    var slot = hash(key) & mask
-    while used(slot) && keys(slot) != key do slot = (slot + 1) & mask
-    if used(slot) then values(slot) else -1
-
-  /** Holds exactly keys(0 until count), key i giving i. */
-  def rebuild(source: Array[Long], count: Int): Unit =
-    if keys.length < 2 * count then
-      val capacity = Integer.highestOneBit(math.max(2 * count, 32)) * 2
-      keys = new Array[Long](capacity)
-      values = new Array[Int](capacity)
-      used = new Array[Boolean](capacity)
-      mask = capacity - 1
-    else java.util.Arrays.fill(used, false)
-    var i = 0
-    while i < count do
-      var slot = hash(source(i)) & mask
-      while used(slot) && keys(slot) != source(i) do slot = (slot + 1) & mask
-      used(slot) = true
-      keys(slot) = source(i)
-      values(slot) = i
-      i += 1
-
-  private inline def hash(key: Long): Int =
-    val h = key * 0x9e3779b97f4a7c15L
-    (h ^ (h >>> 29)).toInt
