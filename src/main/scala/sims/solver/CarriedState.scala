@@ -1,14 +1,16 @@
 package sims.solver
 
-/** The part of a solver's per-world data that one step hands to the next (the soft step's
-  * contact table with its impulses), so that snapshots and failed steps can put it back: a
-  * restored world then replays to the same bits.
+/** The part of a solver's per-world data (`World.workspace`) that one step hands to the next
+  * (the soft step's contact table and its joints' impulses), so that snapshots and failed steps
+  * can put it back: a restored world then replays to the same bits.
   */
-private[sims] trait CarriedState:
+trait CarriedState:
   /** A copy of the carried state, for a snapshot of the world. */
   def copyState(): AnyRef
 
-  /** Puts back a copy made by `copyState`. */
+  /** Puts back a copy made by `copyState` (null: the state of a world that never stepped with
+    * this solver).
+    */
   def restoreState(saved: AnyRef): Unit
 
   /** Marks the start of a step: `undoStep` will go back to here. Cheap (no copy). */

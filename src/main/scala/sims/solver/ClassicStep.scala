@@ -30,7 +30,7 @@ object ClassicStep extends Solver:
     val bullets = world.bulletCount > 0
     if bullets then bulletsOf(world).begin(world)
     world.stage = "advance time"
-    advanceTime(world, h)                 // phase 1
+    advanceTime(world)                    // phase 1
     world.stage = "joint forces"
     applyJointForces(world)               // phase 2
     world.guard("joint forces", Checked.Forces)
@@ -72,7 +72,7 @@ object ClassicStep extends Solver:
       Contact(c.shape1, c.shape2, c.normal, points, IndexedSeq.fill(points.length)(separation), zeros, zeros, zeros)
     }.toIndexedSeq
 
-  private def advanceTime(world: World, h: Double): Unit = world.time = world.time + h
+  private def advanceTime(world: World): Unit = world.advanceTime()
 
   private def applyJointForces(world: World): Unit =
     val joints = world.jointList

@@ -139,7 +139,7 @@ final case class SoftStep(
   def contacts(world: World): IndexedSeq[Contact] =
     world.workspace(classOf[SoftWorkspace], SoftWorkspace()).contactViews()
 
-  private def advanceTime(world: World): Unit = world.time = world.time + world.timeStep
+  private def advanceTime(world: World): Unit = world.advanceTime()
 
   private def loadBodies(world: World, workspace: SoftWorkspace): Unit =
     workspace.bodies.load(world.bodyList)

@@ -5,12 +5,15 @@ import sims.dynamics.World
 
 /** What a world's `step()` runs: the stages of one time step, in order.
   *
-  * The world saves its state before the step and runs its post-step hook after it; a solver
-  * calls `world.guard` after each stage that can produce a non-finite value, so that a failing
-  * step names its stage and leaves the world as it was. Data a solver keeps between steps
-  * (scratch arrays, a contact table) belongs to the world, in `world.workspace`, so one solver
-  * value can step many worlds. Two are built in: [[ClassicStep]] (the default, SiMS 1.2's step)
-  * and `SoftStep`.
+  * The world saves its state before the step, finishes its events and runs its post-step hook
+  * after it. A solver, inside `step`: advances the world's time (`world.advanceTime()`), names
+  * each stage as it begins (`world.stage = "..."`), and calls `world.guard(stage, checked)`
+  * after each stage that can produce a non-finite value, so that a failing step names its stage
+  * and leaves the world as it was. Data a solver keeps between steps (scratch arrays, a contact
+  * table) belongs to the world, in `world.workspace(kind, create)`, so one solver value can step
+  * many worlds; what one step hands to the next implements [[CarriedState]]. Everything a solver
+  * needs is public: one can be written outside the library. Two are built in: [[ClassicStep]]
+  * (the default, SiMS 1.2's step) and `SoftStep`.
   */
 trait Solver:
   /** Advances `world` by one `world.timeStep`. */

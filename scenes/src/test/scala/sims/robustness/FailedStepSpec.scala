@@ -51,7 +51,7 @@ class FailedStepSpec extends AnyFunSuite with Matchers:
     (StateHash(world), world.bodies.map(_.force).toIndexedSeq, world.bodies.map(_.torque).toIndexedSeq)
 
   for solver <- solvers do
-    val name = World.solverName(solver)
+    val name = sims.dynamics.StepGuard.solverName(solver)
 
     test(s"$name: a pair no narrowphase method covers: IllegalStateException naming both shapes and the stage; nothing changed") {
       val world = stackWithBlob(solver)

@@ -19,7 +19,7 @@ class FuzzSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     0.5 * b.mass * (b.linearVelocity dot b.linearVelocity) + 0.5 * b.I * b.angularVelocity * b.angularVelocity).sum
 
   for solver <- Seq(ClassicStep, SoftStep()) do
-    val name = World.solverName(solver)
+    val name = sims.dynamics.StepGuard.solverName(solver)
 
     test(s"$name: random scenes with gravity, joints and springs run 2,000 steps without errors or NaN", sims.SlowTest) {
       forAll(sceneSpec, minSuccessful(8)) { spec =>

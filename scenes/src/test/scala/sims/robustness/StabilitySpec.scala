@@ -28,7 +28,7 @@ class StabilitySpec extends AnyFunSuite with Matchers:
     (start, end)
 
   for solver <- Seq(ClassicStep, SoftStep()) do
-    val name = World.solverName(solver)
+    val name = sims.dynamics.StepGuard.solverName(solver)
 
     test(s"$name: BallStack runs 100 s: finite, inside the container, kinetic energy below 1% of the start", sims.SlowTest) {
       val (world, balls) = BallStack.withBalls(52)

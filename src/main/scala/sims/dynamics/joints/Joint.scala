@@ -47,3 +47,10 @@ abstract class Joint extends Constraint:
     * A joint with an internal body that belongs to no world (the MouseJoint's ground) overrides it.
     */
   private[sims] def bodiesIn(world: World): Boolean = (node1.world eq world) && (node2.world eq world)
+
+  /** Why this joint cannot be stepped by a solver that integrates forces over intervals of `h`
+    * seconds (its force interval; `solverName` for the message), or None. A spring too stiff
+    * for the interval diverges (see [[SpringJoint]]); the world checks this when the joint joins
+    * it and before every step.
+    */
+  private[sims] def forceIntervalProblem(h: Double, solverName: String): Option[String] = None

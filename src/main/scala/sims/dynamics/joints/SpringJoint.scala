@@ -79,9 +79,29 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
       node1.invI * (a1.armX * a1.armX + a1.armY * a1.armY) + node2.invI * (a2.armX * a2.armX + a2.armY * a2.armY)
     (springConstant * h * h + 2 * _damping * h) * inverseMass
 
+  /** A spring too stiff for the solver's force interval grows without bound, to 1e150 m and
+    * beyond before any value overflows, so the state a failed step would restore is ruined
+    * already: it is refused instead.
+    */
+  override private[sims] def forceIntervalProblem(h: Double, solverName: String): Option[String] =
+    val number = stabilityNumber(h)
+    if number < SpringJoint.StabilityLimit then None
+    else
+      Some(s"$this is too stiff for the time step: (k h^2 + 2 c h) / m = $number with " +
+        s"h = $h s ($solverName's force interval) and c = $damping N s/m; " +
+        s"springs integrated explicitly diverge from ${SpringJoint.StabilityLimit} on. Lower springConstant or " +
+        "damping, make the bodies heavier or shorten the time step (or, with SoftStep, use more substeps)")
+
   def correctVelocity(h: Double): Unit = ()
 
   def correctPosition(h: Double): Unit = ()
 
   override def toString: String =
     s"SpringJoint($node1, $node2, springConstant = $springConstant, initialLength = $initialLength)"
+
+/** The spring's stability limit. */
+object SpringJoint:
+  /** Springs whose stability number (k h^2 + 2 c h) / m reaches this diverge when their forces
+    * are integrated explicitly over steps of h.
+    */
+  val StabilityLimit: Double = 4.0

@@ -1,0 +1,36 @@
+package sims.dynamics
+
+import scala.collection.mutable.ArrayBuffer
+
+/** A world's shapes in the order they joined it, each numbered by its join order
+  * (`Shape.worldIndex`, never reused). The array the stages read is made again only when it is
+  * read after a change, so adding n bodies one by one costs O(n), not O(n^2).
+  */
+private[dynamics] final class ShapeList:
+  private val list = ArrayBuffer.empty[Shape]
+  private var snapshot = Array.empty[Shape]
+  private var changed = false
+  private var nextIndex = 0
+
+  /** The shapes of a body joining the world, numbered. */
+  def add(body: Body): Unit =
+    for s <- body.shapes do
+      s.worldIndex = nextIndex
+      nextIndex += 1
+    list ++= body.shapes
+    changed = true
+
+  /** The shapes of a body leaving the world. */
+  def remove(body: Body): Unit =
+    body.shapes.foreach(_.worldIndex = -1)
+    list.filterInPlace(_.body ne body)
+    changed = true
+
+  /** The shapes as an array (not to be modified): a new array after each change, so views of an
+    * earlier one stay as they were.
+    */
+  def array: Array[Shape] =
+    if changed then
+      snapshot = list.toArray
+      changed = false
+    snapshot
