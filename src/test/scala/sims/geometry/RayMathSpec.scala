@@ -60,3 +60,22 @@ class RayMathSpec extends AnyFunSuite with Matchers:
     capsule(0, 0.2, 4, 0) shouldBe None // starts inside
     cast(RayMath.capsule(-1, 0, 1, 0, 0, 0.5, 3, 0, -4, 1, _)) shouldBe Some((0.75, 0.0, 1.0)) // radius 0: the segment
   }
+
+  test("a ray 2e8 m long across a 0.24 m circle or capsule at the origin: the hit on the outline, a unit normal, exactly when it crosses") {
+    for offset <- Seq(0.0, 0.1, -0.2, 0.239, 0.2399999, 0.2400001, 0.25, -0.3) do
+      val crosses = math.abs(offset) < 0.24
+      val onCircle = cast(RayMath.circle(0, 0, 0.24, -1e8, offset, 2e8, 0, 1, _))
+      val onCapsule = cast(RayMath.capsule(-0.5, 0, 0.5, 0, 0.24, -1e8, offset, 2e8, 0, 1, _))
+      withClue(s"offset $offset: ") {
+        onCircle.isDefined shouldBe crosses
+        onCapsule.isDefined shouldBe crosses
+        for (t, nx, ny) <- onCircle do
+          val (x, y) = (-1e8 + t * 2e8, offset)
+          math.hypot(nx, ny) shouldBe 1.0 +- 1e-12
+          math.hypot(x, y) shouldBe 0.24 +- 1e-7 // on the circle, to the ray's own resolution there
+          nx should be < 0.0
+        for (t, nx, ny) <- onCapsule do
+          math.hypot(nx, ny) shouldBe 1.0 +- 1e-12
+          (-1e8 + t * 2e8) shouldBe (-0.5 - math.sqrt(0.24 * 0.24 - offset * offset)) +- 1e-7
+      }
+  }
