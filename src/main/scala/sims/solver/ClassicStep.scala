@@ -63,9 +63,12 @@ object ClassicStep extends Solver:
 
   /** The detector's collisions after the last position correction: each point with the
     * separation -overlap of the shapes along the normal, impulses 0 (the classic step keeps none).
+    * None when the last classic step did not detect collisions (`enableCollisionDetection`
+    * off): the detector's collisions are then an earlier step's, and their pairs' events ended.
     */
   def contacts(world: World): IndexedSeq[Contact] =
-    world.detector.collisions.iterator.map { c =>
+    if !world.workspace(classOf[ContactSolver], ContactSolver()).detected then IndexedSeq.empty
+    else world.detector.collisions.iterator.map { c =>
       val points = c.points.toIndexedSeq
       val separation = -Collision.overlapAlong(c.shape1, c.shape2, c.normal.x, c.normal.y)
       val zeros = IndexedSeq.fill(points.length)(0.0)
@@ -101,6 +104,7 @@ object ClassicStep extends Solver:
 
   private def correctVelocities(world: World, h: Double): Unit =
     val contacts = world.workspace(classOf[ContactSolver], ContactSolver())
+    contacts.detected = world.enableCollisionDetection
     if world.enableCollisionDetection then
       world.detector.detect()
       reportTouching(world) // before the velocities change: the approach speeds of new pairs

@@ -29,6 +29,9 @@ private[sims] final class ContactSolver:
   // True when a body of the loaded points cannot be ordered in waves (see `orderable`).
   private var unorderable = false
 
+  /** Whether the last classic step detected collisions (its contacts are the detector's). */
+  var detected: Boolean = false
+
   /** Number of entries: contact points of the built-in kinds plus user-kind collisions. */
   def size: Int = count
 
