@@ -1,13 +1,12 @@
 package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
-import sims.solver.CarriedState
 
 /** The data a world keeps for the solvers it steps with: each solver's own (its scratch arrays,
   * its contact table), made the first time the world steps with a solver of that kind and kept
   * while the world lives, so that one solver value can step many worlds and switching solvers
   * back and forth keeps each one's data. What a solver hands from one step to the next
-  * implements [[sims.solver.CarriedState]]: snapshots and failed steps put it back.
+  * implements [[CarriedState]]: snapshots and failed steps put it back.
   */
 trait SolverWorkspaces:
   private val workspaces = ArrayBuffer.empty[AnyRef]

@@ -11,7 +11,7 @@ import sims.dynamics.World
   * after each stage that can produce a non-finite value, so that a failing step names its stage
   * and leaves the world as it was. Data a solver keeps between steps (scratch arrays, a contact
   * table) belongs to the world, in `world.workspace(kind, create)`, so one solver value can step
-  * many worlds; what one step hands to the next implements [[CarriedState]]. Everything a solver
+  * many worlds; what one step hands to the next implements [[sims.dynamics.CarriedState]]. Everything a solver
   * needs is public: one can be written outside the library. Two are built in: [[ClassicStep]]
   * (the default, SiMS 1.2's step) and `SoftStep`.
   */

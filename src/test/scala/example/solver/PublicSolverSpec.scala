@@ -3,9 +3,9 @@ package example.solver
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import sims.collision.Contact
-import sims.dynamics.{Checked, Circle, World}
+import sims.dynamics.{CarriedState, Checked, Circle, World}
 import sims.geometry.Vector2D
-import sims.solver.{CarriedState, Solver}
+import sims.solver.Solver
 
 /** The solver seam is public: a solver written outside the library, with its public API only,
   * advances time, names its stages, guards them, keeps per-world data carried from step to

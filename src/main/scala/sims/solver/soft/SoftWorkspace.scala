@@ -7,7 +7,7 @@ import sims.solver.soft.SoftBodies.*
   * constraints with their impulses (both carried from step to step), the collision stage and the
   * softness coefficients.
   */
-private[sims] final class SoftWorkspace extends sims.solver.CarriedState:
+private[sims] final class SoftWorkspace extends sims.dynamics.CarriedState:
   /** The bodies during a step. */
   val bodies: SoftBodies = SoftBodies()
   /** The contacts, this step's and the last step's. */

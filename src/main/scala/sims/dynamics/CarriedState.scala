@@ -1,4 +1,4 @@
-package sims.solver
+package sims.dynamics
 
 /** The part of a solver's per-world data (`World.workspace`) that one step hands to the next
   * (the soft step's contact table and its joints' impulses), so that snapshots and failed steps
