@@ -6,7 +6,7 @@ import sims.dynamics.{Circle, RoundedSegment, Shape}
 import sims.geometry.{ConvexPolygon, Vector2D}
 
 /** Collision of a capsule or an edge (a segment with a radius, 0 for an edge) with a circle, a
-  * polygon, or another capsule or edge: SPEC section 4 carried over to a shape that is a
+  * polygon, or another capsule or edge: SiMS's contact rules carried over to a shape that is a
   * segment grown by a radius. The shapes collide when they touch or overlap; normal and points
   * come from their closest features, as the soft step's manifold finds them with no
   * speculative distance:
@@ -22,7 +22,7 @@ import sims.geometry.{ConvexPolygon, Vector2D}
   *
   * The reference (`shape1`, which the normal points away from) is the capsule against a circle,
   * the polygon against a capsule, and the pair's first shape for two capsules. Each point lies
-  * where `shape2`'s outline reaches deepest into `shape1` (as in the SPEC's circle-circle and
+  * where `shape2`'s outline reaches deepest into `shape1` (as in SiMS's circle-circle and
   * polygon-circle cases). Position correction reads the shapes' projections, in which an edge
   * counts as solid on its far side from the other shape (see `Collision.overlapAlong`).
   */

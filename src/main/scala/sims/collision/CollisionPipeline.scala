@@ -26,7 +26,7 @@ private[sims] final class CollisionPipeline:
 
   /** Replaces the candidate pairs with those of `shapes` (world order), their bounds enlarged by
     * `margin` and by how far their bodies can move in `sweep` seconds, in cells of `gridSide`,
-    * in the grid's coarse order (`inGridOrder`, the SPEC's) or its own; fails past `maxPairs`
+    * in the grid's coarse order (`inGridOrder`, SiMS's) or its own; fails past `maxPairs`
     * pairs, naming `limitName`, the setting that raises it.
     */
   def findPairs(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,

@@ -2,8 +2,8 @@ package sims.collision
 
 import sims.dynamics.{Body, Shape}
 
-/** Which pairs of shapes may collide at all (SPEC section 4, broadphase, with the filters of
-  * issue 15): shapes of different bodies, not both fixed, both collidable, accepted by their
+/** Which pairs of shapes may collide at all (SiMS's broadphase rule, with the filters of
+  * Box2D): shapes of different bodies, not both fixed, both collidable, accepted by their
   * collision filters (`categoryBits`, `maskBits`, `groupIndex`), neither transient to the
   * other, and their bodies not joined by a joint whose `collideConnected` is false. The
   * broadphase applies it to every pair whose bounds overlap. Defaults accept every pair, as

@@ -24,7 +24,8 @@ private[sims] final class ShapeSeparation:
   /** y of the unit normal. */
   var normalY: Double = 1
 
-  private def set(d: Double, nx: Double, ny: Double): Boolean =
+  /** Records distance `d` and normal (nx, ny); true, for the measures to return. */
+  private[collision] def set(d: Double, nx: Double, ny: Double): Boolean =
     distance = d
     normalX = nx
     normalY = ny

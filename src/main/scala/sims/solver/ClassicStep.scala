@@ -5,7 +5,7 @@ import sims.collision.{Collision, Contact}
 import sims.dynamics.{Checked, World}
 import sims.dynamics.joints.ForceJoint
 
-/** SiMS 1.2's time step, the default solver: the seven phases of SPEC section 2 (documentation
+/** SiMS 1.2's time step, the default solver: the seven phases of SiMS 1.2 (documentation
   * 3.3 and 4.10), in order, each a method below:
   *
   *   1. `advanceTime`: time += h
@@ -18,8 +18,8 @@ import sims.dynamics.joints.ForceJoint
   *      `correctPosition`, the narrowphase rerun before each pass
   *   7. the world's post-step hook (run by the world)
   *
-  * Results are the SPEC's rules to the bit; how they are computed (flat arrays, wave order) is
-  * free (deviation 6). Beside the SPEC's phases, two stages of issue 15 that change nothing in
+  * Results are SiMS's rules to the bit; how they are computed (flat arrays, wave order) is
+  * free (deviation 6). Beside SiMS's phases, two stages that change nothing in
   * a world without bullets: the pairs that touch are reported to the world's contact events
   * (`reportTouching`, after phase 4's detection and after phase 6), and bullets are swept
   * against fixed shapes at the end ([[ContinuousCollision]]).

@@ -6,7 +6,7 @@ import sims.dynamics.{Checked, World}
 import sims.solver.soft.{ContactConstraints, ContactTouching, SoftBodies, SoftWorkspace}
 import sims.solver.soft.SoftBodies.*
 
-/** The soft step (SOFTSTEP.md): substeps, soft constraints, warm starting, relaxation and
+/** The soft step: substeps, soft constraints, warm starting, relaxation and
   * speculative contacts, the design Box2D v3 made the field's best for stable stacks, long
   * chains and high mass ratios. Choose it per world: `world.solver = SoftStep()`.
   *

@@ -139,7 +139,7 @@ class NarrowphaseSpec extends AnyFunSuite with Matchers:
       (collision.normal dot (collision.shape2.pos - collision.shape1.pos)) should be > 0.0
   }
 
-  test("exactly touching boxes have no positive overlap on the touching axis (SPEC rule, pinned)") {
+  test("exactly touching boxes have no positive overlap on the touching axis (SiMS's rule, pinned)") {
     // Only positive overlaps count, so the side axis is chosen: a known weakness of the
     // original's rule, kept as specified; scenes start boxes a little apart.
     val collision = collide(box(0.5, 0.5, 0, 0.5), box(0.5, 0.5, 0, 1.5)) // both faces at y = 1 exactly

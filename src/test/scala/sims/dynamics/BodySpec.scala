@@ -140,7 +140,7 @@ class BodySpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     intercept[IllegalArgumentException](c.rotation = 1).getMessage should include("already in a world")
   }
 
-  test("a force of 1e308 N applied 1e308 m away is rejected where it is given, naming its infinite torque (issue 16)") {
+  test("a force of 1e308 N applied 1e308 m away is rejected where it is given, naming its infinite torque") {
     val world = World()
     val b = Circle(1, 1).asBody
     world += b

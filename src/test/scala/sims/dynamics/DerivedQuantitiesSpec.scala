@@ -5,7 +5,7 @@ import org.scalatest.matchers.should.Matchers
 import sims.geometry.Vector2D
 
 /** Sizes and densities that pass their own checks but whose mass or inertia over- or
-  * underflows are rejected where the shape or body is made, naming its arguments (issue 16).
+  * underflows are rejected where the shape or body is made, naming its arguments.
   */
 class DerivedQuantitiesSpec extends AnyFunSuite with Matchers:
 

@@ -50,7 +50,7 @@ class ShapeSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     agreesWithIntegration(for hl <- Gen.choose(0.05, 5.0); r <- Gen.choose(0.05, 3.0) yield Capsule(hl, r, 2))
   }
 
-  test("closed forms of the SPEC") {
+  test("closed forms of the documentation") {
     val c = Circle(2, 3)
     c.volume shouldBe math.Pi * 4
     c.I shouldBe c.mass * 4 / 2

@@ -41,7 +41,7 @@ class Vector2DSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     e.getMessage should include("null vector")
   }
 
-  test("unit of a huge vector is not (0, 0): its length does not overflow (issue 16)") {
+  test("unit of a huge vector is not (0, 0): its length does not overflow") {
     val u = Vector2D(1e200, 1e200).unit
     u.x shouldBe math.sqrt(0.5) +- 1e-15
     u.y shouldBe u.x
@@ -49,7 +49,7 @@ class Vector2DSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     Vector2D(Double.MaxValue, 0).unit shouldBe Vector2D(1, 0)
   }
 
-  test("unit of a tiny vector is no null-vector error: its length does not underflow (issue 16)") {
+  test("unit of a tiny vector is no null-vector error: its length does not underflow") {
     Vector2D(1e-200, 0).unit shouldBe Vector2D(1, 0)
     Vector2D(0, -java.lang.Double.MIN_VALUE).unit shouldBe Vector2D(0, -1)
     Vector2D(3e-170, 4e-170).unit.x shouldBe 0.6 +- 1e-15

@@ -4,7 +4,7 @@ import java.nio.file.{Files, Path}
 import sims.dynamics.World
 import sims.scenes.{Ballpit, BoxPyramid, BoxStack, Drop, HeavyStack, Layout, LayoutScene, Outline, Scene, SwingingChain}
 
-/** The quality report of the soft step (issue 14): the same scenes in every engine (SiMS with
+/** The quality report of the soft step: the same scenes in every engine (SiMS with
   * the classic step, SiMS with `SoftStep()`, jBox2D, dyn4j), each with its defaults at 60 Hz and
   * the bench's settings, measured by the same code, and whether the soft step meets the
   * issue's targets. Prints one Markdown table and writes it to `bench/results/quality-<date>.md`.

@@ -11,7 +11,7 @@ import sims.geometry.{AABB, Projection, Vector2D}
 import sims.robustness.{RandomScenes, StateHash}
 import sims.solver.{ClassicStep, SoftStep, Solver}
 
-/** A saved and loaded world steps to the same bits as the original (issue 16). */
+/** A saved and loaded world steps to the same bits as the original. */
 class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
   import RandomScenes.{given, *}
 

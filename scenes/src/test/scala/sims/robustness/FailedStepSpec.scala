@@ -8,7 +8,7 @@ import sims.geometry.{AABB, Projection, Vector2D}
 import sims.solver.{ClassicStep, SoftStep, Solver}
 
 /** Any exception inside `step()` leaves the world exactly as it was before the step and names
-  * the stage that failed, under both solvers (issue 16: only ArithmeticException rolled back).
+  * the stage that failed, under both solvers (once only an ArithmeticException rolled back).
   */
 class FailedStepSpec extends AnyFunSuite with Matchers:
 

@@ -40,7 +40,7 @@ class FuzzSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
       }
     }
 
-    test(s"$name: a spring too stiff for the time step (k = 1e12) is rejected where it is added, naming the limit (issue 16)") {
+    test(s"$name: a spring too stiff for the time step (k = 1e12) is rejected where it is added, naming the limit") {
       val world = World()
       world.solver = solver
       val (a, b) = pair(world)

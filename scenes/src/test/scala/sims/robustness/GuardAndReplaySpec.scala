@@ -24,7 +24,7 @@ class GuardAndReplaySpec extends AnyFunSuite with Matchers:
     world.step() // and the world goes on
   }
 
-  test("a force whose sum with the forces already applied overflows is rejected where it is applied (issue 16)") {
+  test("a force whose sum with the forces already applied overflows is rejected where it is applied") {
     val (world, balls) = BallStack.withBalls(3)
     balls(0).applyForce(Vector2D(Double.MaxValue, 0))
     val before = StateHash(world)

@@ -8,7 +8,7 @@ import sims.geometry.Vector2D
 import sims.prefabs.{Net, Pylon, Ragdoll}
 import sims.scenes.{Ballpit, BoxPyramid, SwingingChain}
 
-/** The soft step's quality targets (issue 14) on the bench's scenes or shorter variants that
+/** The soft step's quality targets on the bench's scenes or shorter variants that
   * run in seconds; the full-size numbers come from the bench's quality report.
   */
 class SoftQualitySpec extends AnyFunSuite with Matchers:

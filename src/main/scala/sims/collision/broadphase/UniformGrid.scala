@@ -5,7 +5,7 @@ import sims.Defaults
 import sims.collision.{PairBuffer, PairFilter}
 import sims.dynamics.Shape
 
-/** The SPEC's grid broadphase (section 4): square cells of side `gridSide`; two shapes are a
+/** SiMS's grid broadphase (docs/collisions.md): square cells of side `gridSide`; two shapes are a
   * candidate pair when they share a cell, their bounds overlap and [[PairFilter]] accepts them.
   * Each unordered pair is reported once: for each shape in world order, its partners among the
   * earlier shapes, cell by cell of the shape's cells (x, then y), and within a cell the most
@@ -40,7 +40,7 @@ private[sims] final class UniformGrid extends Broadphase:
   private var placement = new Array[Byte](0)
   private var fineX0, fineY0, fineX1, fineY1 = new Array[Int](0)
   // Coarse cells as Longs: floor(coordinate / gridSide) is exact in a Long for any coordinate
-  // up to 1.8e19 gridSides, so far from the origin pairs keep the SPEC's order (in an Int it
+  // up to 1.8e19 gridSides, so far from the origin pairs keep SiMS's order (in an Int it
   // saturates beyond 2^31 cells, 4.3e9 m with 2 m cells).
   private var coarseX0, coarseY0 = new Array[Long](0)
   private val wide = ArrayBuffer.empty[Int]
@@ -137,7 +137,7 @@ private[sims] final class UniformGrid extends Broadphase:
 
   def findPairs(pairs: PairBuffer): Unit = findPairs(pairs, inGridOrder = true)
 
-  /** `findPairs`, with the pairs in the SPEC's coarse grid order or (`inGridOrder` false, for
+  /** `findPairs`, with the pairs in SiMS's coarse grid order or (`inGridOrder` false, for
     * a solver that does not need it) in the internal grid's own order, still deterministic:
     * each shape's partners in the order its cells find them.
     */

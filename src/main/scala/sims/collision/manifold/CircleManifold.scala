@@ -8,7 +8,7 @@ import sims.dynamics.Circle
 // between them: cA + n (rA + s / 2). Coincident centres have no line of centres; any fixed
 // normal is as good as another there, and (0, 1) keeps the result deterministic.
 
-/** The manifold of two circles (SOFTSTEP.md section 4). */
+/** The manifold of two circles (see docs/two-solvers.md). */
 private[sims] object CircleManifold:
 
   /** Fills `manifold` for circles A and B: one point with id 0 when their separation

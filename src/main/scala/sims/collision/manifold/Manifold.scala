@@ -1,6 +1,6 @@
 package sims.collision.manifold
 
-// The contact of two shapes as the soft step (SOFTSTEP.md section 4) consumes it: one normal
+// The contact of two shapes as the soft step (see docs/two-solvers.md) consumes it: one normal
 // and at most two points, each with its separation and a feature id. The narrowphase
 // functions of this package fill one reused Manifold in place, so colliding allocates nothing;
 // the solver copies out what it keeps before the Manifold is filled again.

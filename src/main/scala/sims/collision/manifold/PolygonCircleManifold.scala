@@ -17,7 +17,7 @@ import sims.geometry.{ConvexPolygon, PolygonMath}
 // thrown out through the floor's bottom (docs/performance.md, ball pits). So a centre inside
 // keeps the side used in the last step unless another side is nearer by more than the radius.
 
-/** The manifold of a convex polygon and a circle (SOFTSTEP.md section 4). */
+/** The manifold of a convex polygon and a circle (see docs/two-solvers.md). */
 private[sims] object PolygonCircleManifold:
 
   /** Fills `manifold` for polygon A and circle B: at most one point, midway between the

@@ -45,8 +45,7 @@ import sims.geometry.ConvexPolygon
 //
 // Ids: see `collide`.
 
-/** The manifold of two convex polygons, or of a polygon and a capsule or an edge (SOFTSTEP.md
-  * section 4).
+/** The manifold of two convex polygons, or of a polygon and a capsule or an edge (see docs/two-solvers.md).
   */
 private[sims] object PolygonManifold:
 

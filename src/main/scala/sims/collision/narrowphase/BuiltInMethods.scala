@@ -4,7 +4,7 @@ import sims.collision.Collision
 import sims.dynamics.{Circle, RoundedSegment, Shape}
 import sims.geometry.ConvexPolygon
 
-/** The built-in narrowphase methods (SPEC section 4): partial functions for the detector's
+/** The built-in narrowphase methods (SiMS's contact rules, docs/collisions.md): partial functions for the detector's
   * lists, where users see, reorder or shadow them, each also carrying its [[PairKind]] and a
   * direct two-argument entry that skips building a tuple on the hot path.
   */

@@ -5,8 +5,8 @@ import sims.collision.Collision
 import sims.dynamics.Shape
 
 /** The second stage of collision detection: for each candidate pair, which methods its shapes'
-  * classes have, and, for the classic step, whether they collide and their [[Collision]] (SPEC
-  * section 4).
+  * classes have, and, for the classic step, whether they collide and their [[Collision]] (SiMS's
+  * contact rules).
   *
   * The detector's `detectionMethods` and `collisionMethods` lists are the extension point. They
   * fill this table: a map from a pair of shape classes to the first test and the first

@@ -7,17 +7,17 @@ import sims.dynamics.Shape
 /** Everything the library computes for one pair of built-in shape kinds, (first, second) in the
   * order of a candidate pair: the narrowphase registry's entry, serving both steps and the
   * queries. Each shape kind fills its entries in one file (`CirclePairs`, `PolygonPairs`,
-  * `CapsulePairs`), and the registry (the companion) lists them by [[PairKind]], as Box2D fills
-  * its table of collide functions indexed by the two shape types.
+  * `CapsulePairs`), [[ShapeKind]] lists them, and the registry (the companion) holds them by
+  * [[PairKind]], as Box2D fills its table of collide functions indexed by the two shape types.
   *
   * A pair of a user's kinds has no entry: it goes through the detector's partial-function lists
   * (see [[Narrowphase]]).
   */
 private[sims] abstract class PairFunctions(val kind: PairKind):
-  /** The classic step's test (SPEC section 4): whether the shapes touch or overlap. */
+  /** The classic step's test (SiMS's contact rules, docs/collisions.md): whether the shapes touch or overlap. */
   def colliding(a: Shape, b: Shape): Boolean
 
-  /** The classic step's contact of two colliding shapes, a new object (SPEC section 4). */
+  /** The classic step's contact of two colliding shapes, a new object (SiMS's contact rules, docs/collisions.md). */
   def collision(a: Shape, b: Shape): Collision
 
   /** The classic step's contact from the current positions, refilling the collision object the
@@ -38,10 +38,12 @@ private[sims] abstract class PairFunctions(val kind: PairKind):
     */
   def separation(a: Shape, b: Shape, out: ShapeSeparation): Boolean
 
-/** The registry: the entry of each pair of built-in kinds. */
+/** The registry: the entry of each pair of built-in kinds (each kind's entries listed in
+  * [[ShapeKind]]'s file).
+  */
 private[sims] object PairFunctions:
   private val table: Array[PairFunctions] =
-    val entries = CirclePairs.entries ++ PolygonPairs.entries ++ CapsulePairs.entries
+    val entries = ShapeKind.entries
     val byKind = new Array[PairFunctions](PairKind.values.length)
     for e <- entries do
       require(byKind(e.kind.ordinal) == null, s"two entries for ${e.kind}")

@@ -11,6 +11,11 @@ private[sims] enum ShapeKind:
   case Circle, Polygon, Capsule
 
 private[sims] object ShapeKind:
+  /** Every built-in kind's entries in the narrowphase registry ([[PairFunctions]]): a kind's
+    * file fills its pairs with the kinds listed before it, both ways round.
+    */
+  def entries: Seq[PairFunctions] = CirclePairs.entries ++ PolygonPairs.entries ++ CapsulePairs.entries
+
   /** The kind of `shape`, or null for a user kind. */
   def of(shape: Shape): ShapeKind = shape match
     case _: Circle => ShapeKind.Circle

@@ -3,7 +3,7 @@ package sims.dynamics.joints
 import sims.dynamics.Body
 import sims.geometry.Vector2D
 
-/** A point fixed on a body, where a joint attaches (SPEC section 3): its offset from the body's
+/** A point fixed on a body, where a joint attaches (SiMS 1.2, docs/constraints.md): its offset from the body's
   * centre and the body's rotation at creation, so that its current arm is that offset rotated
   * by the change of rotation since. Immutable: each step that needs the current arm keeps its
   * own [[AnchorArm]] (`arm()`), so the two steps never share a field.

@@ -116,7 +116,7 @@ final class DistanceJoint(val node1: Body, anchor1: Vector2D, val node2: Body, a
       val c = length - distance
       val px = -ux * m * c
       val py = -uy * m * c
-      // Division by the mass (infinite when fixed), the SPEC's -P/m1, where the other joints and
+      // Division by the mass (infinite when fixed), SiMS's -P/m1, where the other joints and
       // the contacts multiply by 1/m: the golden hashes pin both, and x / m and x * (1/m) differ
       // in the last bit (measured: multiplying here changes the golden "mixed" scene's hash).
       node1.displace(-(px / node1.mass), -(py / node1.mass), -((r1x * py - r1y * px) / node1.I))

@@ -19,7 +19,7 @@ import sims.geometry.Vector2D
   * -(a1 lambda.x + lambda.y). These conserve linear and angular momentum exactly.
   * Position: solve K lambda = -C and move and turn both bodies by the same rule divided by the
   * masses and inertias (velocities unchanged), as the DistanceJoint does.
-  * The original SiMS left this joint unfinished (deviation 4 of the SPEC).
+  * The original SiMS left this joint unfinished (deviation 4 in docs/deviations.md).
   *
   * @param anchor1 point on node1 through which the line goes, world coordinates at creation
   * @param anchor2 point on node2 that slides along the line, world coordinates at creation

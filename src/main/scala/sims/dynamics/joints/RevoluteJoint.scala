@@ -21,7 +21,7 @@ import sims.geometry.Vector2D
   * +P/m2 and turns by +(r2 x P)/I2 (velocities unchanged), as the DistanceJoint does.
   * A fixed body has 1/m = 1/I = 0; K is singular only when both bodies are fixed, and then
   * nothing is corrected. The original SiMS had a wrong K and no position correction
-  * (deviation 2 of the SPEC).
+  * (deviation 2 in docs/deviations.md).
   *
   * @param anchor the pin, world coordinates at creation; it then moves with both bodies
   */

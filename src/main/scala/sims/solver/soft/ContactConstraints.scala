@@ -3,7 +3,7 @@ package sims.solver.soft
 import sims.solver.soft.ContactTable.*
 import sims.solver.soft.SoftBodies.*
 
-/** The soft step's contact constraints (SOFTSTEP.md sections 2 and 3), over the arrays of a
+/** The soft step's contact constraints (see docs/two-solvers.md), over the arrays of a
   * [[Contacts]] generation and of [[SoftBodies]].
   *
   * Derivation, per point with arms rA, rB from the bodies' centres at the start of the step,

@@ -7,7 +7,7 @@ import sims.dynamics.{Shape, World}
 import sims.solver.soft.ContactTable.*
 import sims.solver.soft.SoftBodies.*
 
-/** The soft step's collision stage, once per step (SOFTSTEP.md sections 2.1 and 4): candidate
+/** The soft step's collision stage, once per step (see docs/two-solvers.md): candidate
   * pairs from bounds enlarged by the speculative distance, then a manifold of at most two
   * points with feature ids per pair, written into the table's new generation with the impulses
   * of the matching points of the last step (warm starting).

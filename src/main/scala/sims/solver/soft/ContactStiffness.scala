@@ -3,7 +3,7 @@ package sims.solver.soft
 import sims.solver.soft.ContactTable.*
 
 /** The softness of each contact for one step. A contact is as stiff as `hertz` (twice that
-  * against a fixed body, `staticFactor`), as SOFTSTEP.md says, except where its load would press
+  * against a fixed body, `staticFactor`), by default, except where its load would press
   * it deeper: a soft contact carrying the force F between bodies of effective mass m settles F /
   * (m omega^2) into the overlap, so a light box under a heavy one sinks in (a box 100 times
   * heavier on two light ones: 11 cm at 30 Hz). Such a contact is made stiff enough to hold its

@@ -4,7 +4,7 @@ import sims.collision.PairTable
 import sims.dynamics.Shape
 
 /** The soft step's contacts: one record per touching (or nearly touching) pair of shapes, with
-  * at most two points, in flat arrays (SOFTSTEP.md sections 1 and 2).
+  * at most two points, in flat arrays (see docs/two-solvers.md).
   *
   * Two generations are kept: the committed one (the last step's contacts, with the impulses
   * they ended with) and the one being built for this step. A new contact finds the last

@@ -1,6 +1,6 @@
 package sims.solver.soft
 
-/** The coefficients of a soft constraint (SOFTSTEP.md section 3): a constraint that behaves
+/** The coefficients of a soft constraint (see docs/two-solvers.md): a constraint that behaves
   * like a damped spring of natural frequency `hertz` and damping ratio `zeta`, solved
   * implicitly over a substep of length h, so it is stable for any stiffness. With
   * omega = 2 pi hertz, a1 = 2 zeta + h omega, a2 = h omega a1, a3 = 1 / (1 + a2):

@@ -9,7 +9,7 @@ import sims.dynamics.{Circle, Rectangle, Shape, World}
 import sims.geometry.Vector2D
 import sims.solver.{ClassicStep, SoftStep}
 
-/** The grid at the edges of what it can represent (issue 16): huge shapes, scenes far from the
+/** The grid at the edges of what it can represent: huge shapes, scenes far from the
   * origin, and piles of shapes at one point.
   */
 class UniformGridLimitsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:

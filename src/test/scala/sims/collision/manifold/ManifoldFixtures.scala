@@ -10,10 +10,10 @@ import sims.geometry.{ConvexPolygon, Vector2D}
 object ManifoldFixtures:
   type Polygon = Shape & ConvexPolygon
 
-  /** SOFTSTEP.md's default speculative distance, m. */
+  /** The soft step's default speculative distance, m. */
   val SpeculativeDistance: Double = 0.02
 
-  /** SOFTSTEP.md's default linear slop, m. */
+  /** The soft step's default linear slop, m. */
   val LinearSlop: Double = 0.005
 
   /** A point of a manifold, for comparisons. */

@@ -3,7 +3,7 @@ package sims.solver.soft.joints
 import sims.dynamics.joints.{DistanceJoint, ForceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint}
 import sims.solver.soft.SoftContext
 
-/** A joint as the soft step solves it (SOFTSTEP.md section 3): the joint says what is
+/** A joint as the soft step solves it (see docs/two-solvers.md): the joint says what is
   * constrained (its anchors, its settings); its constraint here does the soft step's work on
   * it, each stage a method, as Box2D keeps one file per joint with its prepare and solve
   * functions. The constraint owns everything the soft step keeps for its joint: the impulses it
