@@ -27,5 +27,5 @@ class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
   }
 
   test("golden-mixed under SoftStep after 240 steps") {
-    soft("golden-mixed", 240) shouldBe "ed0cd3b055769bef"
+    soft("golden-mixed", 240) shouldBe "9605c6110b691549"
   }

@@ -71,7 +71,7 @@ private[sims] object ContactTable:
   inline val NormalImpulse = 7 // accumulated (and warm started)
   inline val TangentImpulse = 8
   inline val MaxNormalImpulse = 9 // the largest normal impulse applied in one solve
-  inline val RelativeVelocity = 10 // the fastest normal approach of the step (at its start, then in the solves)
+  inline val RelativeVelocity = 10 // the normal approach: at the start, plus gravity and forces until the point pushed
   inline val TotalNormalImpulse = 11 // the normal impulse applied over the step: its substeps and restitution
   inline val HotPoint = 12
 
