@@ -58,6 +58,8 @@ private[sims] final class ContactFinder:
           val methods = narrowphase.resolve(a, b)
           val key = ContactTable.key(a, b)
           val last = table.lastOf(key)
+          // For every pair, kept or not: it also refuses speeds too large to compute with.
+          val approach = approachBound(a.body.index, b.body.index)
           methods.kind match
             case null =>
               val collision = narrowphase.collideGeneral(methods, a, b)
@@ -66,7 +68,7 @@ private[sims] final class ContactFinder:
               if last >= 0 && persistence > 0 && keeps(table.committed, last, a, b, persistence) then keep(table, last, a, b, key)
               else
                 builtIn(kind, a, b, if last >= 0 then table.committed.side(last) else -1,
-                  speculativeDistance + timeStep * approachBound(a.body.index, b.body.index), linearSlop)
+                  speculativeDistance + timeStep * approach, linearSlop)
                 if manifold.pointCount > 0 then addManifold(table, a, b, key, last)
           i += 1
       case detector =>
@@ -91,8 +93,26 @@ private[sims] final class ContactFinder:
     val sB = b * SoftBodies.Stride
     val dvx = state(sB) - state(sA)
     val dvy = state(sB + 1) - state(sA + 1)
-    math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + 2)) * bodies.bodies(a).extent +
+    val bound = math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + 2)) * bodies.bodies(a).extent +
       math.abs(state(sB + 2)) * bodies.bodies(b).extent
+    // Its square overflows from 1.3e154 m/s on: speeds at which the contacts' products (a
+    // speed times an arm, a mass, an inverse inertia) overflow or lose all meaning.
+    if !java.lang.Double.isFinite(bound * bound) then overflow(a, b, bound)
+    bound
+
+  /** A pair approaching too fast to compute with (a finite velocity near Double.MaxValue: the
+    * step would carry on with positions of 1e306 m, or spread NaN to the other body): an error
+    * naming the faster body. The world restores its state before the step and names the stage.
+    */
+  private def overflow(a: Int, b: Int, bound: Double): Nothing =
+    val state = bodies.state
+    def speed(i: Int): Double =
+      val k = i * SoftBodies.Stride
+      math.abs(state(k)) + math.abs(state(k + 1)) + math.abs(state(k + 2)) * bodies.bodies(i).extent
+    val (fast, other) = if speed(a) >= speed(b) then (a, b) else (b, a)
+    val k = fast * SoftBodies.Stride
+    throw ArithmeticException(s"the speed of body $fast (${bodies.bodies(fast)}: velocity (${state(k)}, ${state(k + 1)}), " +
+      s"angular velocity ${state(k + 2)}) is too large to compute its pair with body $other (approach bound $bound m/s)")
 
   /** Fills the manifold of a pair of built-in kinds. */
   private def builtIn(kind: PairKind, a: Shape, b: Shape, lastSide: Int, speculativeDistance: Double, linearSlop: Double): Unit =
