@@ -21,7 +21,11 @@ import sims.solver.soft.ContactTable.*
   * motion, as within the substeps. A stack's contact normals then do not tilt with every tiny
   * rotation of the boxes, which would push them sideways (without this a 12-box stack of 0.5 m
   * boxes leans and falls within 10 s), and the narrowphase is skipped for resting contacts.
-  * The idea is Box2D v3.2's "contact recycling" (after PhysX's persistent manifolds).
+  * The idea is Box2D v3.2's "contact recycling" (after PhysX's persistent manifolds). Pairs of
+  * circles are computed every step: their normal is the line of their centres whatever their
+  * rotation, so keeping it gains no stability, and its anchors, kept while the balls roll
+  * past each other, slide apart: the two impulses then form a couple, which changed the
+  * angular momentum of 60 balls colliding in free space by 1.5% in 10 s (0.4% without).
   *
   * Pairs of the built-in kinds get the manifold functions of `sims.collision.manifold`; pairs
   * of a user's kinds go through the world's `GridDetector` lists (their `points` and `normal`,
@@ -65,7 +69,8 @@ private[sims] final class ContactFinder:
               val collision = narrowphase.collideGeneral(methods, a, b)
               if collision != null then addCollision(table, collision, key, last)
             case kind =>
-              if last >= 0 && persistence > 0 && keeps(table.committed, last, a, b, persistence) then keep(table, last, a, b, key)
+              if last >= 0 && persistence > 0 && kind != PairKind.CircleCircle && keeps(table.committed, last, a, b, persistence) then
+                keep(table, last, a, b, key)
               else
                 builtIn(kind, a, b, if last >= 0 then table.committed.side(last) else -1,
                   speculativeDistance + timeStep * approach, linearSlop)
