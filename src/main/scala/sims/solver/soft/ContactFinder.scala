@@ -110,14 +110,14 @@ private[sims] final class ContactFinder:
     * naming the faster body. The world restores its state before the step and names the stage.
     */
   private def overflow(a: Int, b: Int, bound: Double): Nothing =
-    val state = bodies.state
+    // The bodies still hold their velocities of the start of the step.
     def speed(i: Int): Double =
-      val k = i * SoftBodies.Stride
-      math.abs(state(k)) + math.abs(state(k + 1)) + math.abs(state(k + 2)) * bodies.bodies(i).extent
+      val body = bodies.bodies(i)
+      math.abs(body.vx) + math.abs(body.vy) + math.abs(body.w) * body.extent
     val (fast, other) = if speed(a) >= speed(b) then (a, b) else (b, a)
-    val k = fast * SoftBodies.Stride
-    throw ArithmeticException(s"the speed of body $fast (${bodies.bodies(fast)}: velocity (${state(k)}, ${state(k + 1)}), " +
-      s"angular velocity ${state(k + 2)}) is too large to compute its pair with body $other (approach bound $bound m/s)")
+    val body = bodies.bodies(fast)
+    throw ArithmeticException(s"the speed of body $fast ($body: velocity ${body.linearVelocity}, angular velocity " +
+      s"${body.angularVelocity}) is too large to compute its pair with body $other (approach bound $bound m/s)")
 
   /** Fills the manifold of a pair of built-in kinds. */
   private def builtIn(kind: PairKind, a: Shape, b: Shape, lastSide: Int, speculativeDistance: Double, linearSlop: Double): Unit =
