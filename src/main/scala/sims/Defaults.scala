@@ -125,6 +125,12 @@ object Defaults:
 
   /** Impacts slower than this do not bounce, m/s. */
   val RestitutionThreshold: Double = 1
+  /** The most passes of the soft step's restitution stage. */
+  val RestitutionIterations: Int = 20
+  /** The soft step's restitution passes stop once no bouncing point's normal velocity is off
+    * its target by more than this, m/s.
+    */
+  val RestitutionTolerance: Double = 1e-6
 
   /** Overlap tolerance of the soft narrowphase's choices, m. */
   val LinearSlop: Double = 0.005

@@ -17,9 +17,13 @@ import sims.solver.soft.SoftBodies.*
   *      with feature ids, warm starting from the last step's contact of the same shape pair
   *   4. `prepare`: effective masses, softness, the normal velocities before the step
   *   5. `substeps` times: `integrateVelocities` (gravity and forces, the force joints' at the
-  *      substep's placements), `warmStart`, `solve` (with bias: joints, contacts, joint trees),
+  *      substep's placements; what they add to the approach of contact points that have not
+  *      pushed yet), `warmStart`, `solve` (with bias: joints, contacts, joint trees),
   *      `integratePositions`, `relax` (`solve` without bias)
-  *   6. `applyRestitution`, once
+  *   6. `applyRestitution`, once: every point that pushed after approaching faster than
+  *      `restitutionThreshold` bounces from that approach, all such points at once (passes in
+  *      turn, at most `Defaults.RestitutionIterations`, until none is off its target by more
+  *      than `Defaults.RestitutionTolerance`), so that restitution 1 keeps the kinetic energy
   *   7. `finish`: placements and velocities back into the bodies, forces cleared; the
   *      touching contacts reported to the world's contact events; the contacts with their
   *      impulses kept for the next step
@@ -184,6 +188,7 @@ final case class SoftStep(
         state(k + VelocityY) += h * (gy + bodies.substepForceY(i) * m)
         state(k + AngularVelocity) += h * bodies.substepTorque(i) * bodies.invI(i)
       i += 1
+    ContactConstraints.addFreeMotion(workspace.table.current, bodies, gx, gy, h)
 
   /** The force joints' forces at the substep's placements and velocities, added to the user's. */
   private def applyForceJoints(workspace: SoftWorkspace): Unit =
@@ -259,7 +264,8 @@ final case class SoftStep(
       i += 1
 
   private def applyRestitution(workspace: SoftWorkspace): Unit =
-    ContactConstraints.restitution(workspace.table.current, workspace.bodies, restitutionThreshold)
+    ContactConstraints.restitution(workspace.table.current, workspace.bodies, restitutionThreshold,
+      Defaults.RestitutionIterations, Defaults.RestitutionTolerance)
 
   private def finish(world: World, workspace: SoftWorkspace): Unit =
     workspace.bodies.finish()

@@ -125,10 +125,6 @@ private[sims] object ContactConstraints:
         val dvx = vBx - wB * rBy - vAx + wA * rAy
         val dvy = vBy + wB * rBx - vAy - wA * rAx
         val vn = dvx * nx + dvy * ny
-        // The fastest approach seen this step, for restitution: the impact's own speed when a
-        // speculative point closes within the step (the speed at the start of the step is
-        // slower by the gravity of the fall since).
-        if useBias && vn < hot(q + RelativeVelocity) then hot(q + RelativeVelocity) = vn
         val accumulated = hot(q + NormalImpulse)
         var impulse = -hot(q + NormalMass) * massScale * (vn + bias) - impulseScale * accumulated
         val total = math.max(accumulated + impulse, 0.0)
@@ -169,37 +165,91 @@ private[sims] object ContactConstraints:
       state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       c += 1
 
-  /** Once per step, after the substeps: a point that was approaching faster than `threshold`
-    * during the step and carried a normal impulse bounces, its normal velocity set to -e times
-    * its fastest approach (impulse clamped as always).
+  /** Adds to each point's approach what the substep's gravity and forces (`integrateVelocities`)
+    * changed of its normal velocity, while the point has not pushed yet this step: its approach
+    * at impact, for restitution, is the one at the start of the step plus what gravity and
+    * forces added before it (a ball falling onto the ground: the speed it hits with), and none
+    * of what other contacts did to the bodies within the step (see `restitution`).
     */
-  def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double): Unit =
+  def addFreeMotion(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, h: Double): Unit =
     val hot = contacts.hot
-    val state = bodies.state
     var c = 0
     while c < contacts.count do
       val k = contacts.offset(c)
-      val e = hot(k + Restitution)
-      if e != 0 then
+      if hot(k + Restitution) != 0 then
         val a = contacts.bodyA(c)
         val b = contacts.bodyB(c)
-        val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
+        val mA = bodies.invMass(a); val mB = bodies.invMass(b)
+        // The substep's change of each body's velocities by gravity and forces.
+        val dvAx = if mA == 0 then 0.0 else h * (gx + bodies.substepForceX(a) * mA)
+        val dvAy = if mA == 0 then 0.0 else h * (gy + bodies.substepForceY(a) * mA)
+        val dwA = h * bodies.substepTorque(a) * bodies.invI(a)
+        val dvBx = if mB == 0 then 0.0 else h * (gx + bodies.substepForceX(b) * mB)
+        val dvBy = if mB == 0 then 0.0 else h * (gy + bodies.substepForceY(b) * mB)
+        val dwB = h * bodies.substepTorque(b) * bodies.invI(b)
         val nx = hot(k + NormalX); val ny = hot(k + NormalY)
         var p = 0
         while p < contacts.pointCount(c) do
           val q = k + Header + p * HotPoint
-          if hot(q + RelativeVelocity) < -threshold && hot(q + MaxNormalImpulse) > 0 then
-            val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-            val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-            val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) + state(sA + AngularVelocity) * rAy
-            val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
-            val vn = dvx * nx + dvy * ny
-            val accumulated = hot(q + NormalImpulse)
-            val total = math.max(accumulated - hot(q + NormalMass) * (vn + e * hot(q + RelativeVelocity)), 0.0)
-            val impulse = total - accumulated
-            hot(q + NormalImpulse) = total
-            hot(q + TotalNormalImpulse) += impulse
-            bodies.applyImpulse(a, -impulse * nx, -impulse * ny, rAx, rAy)
-            bodies.applyImpulse(b, impulse * nx, impulse * ny, rBx, rBy)
+          if hot(q + MaxNormalImpulse) == 0 then
+            val dvx = dvBx - dwB * hot(q + AnchorBY) - dvAx + dwA * hot(q + AnchorAY)
+            val dvy = dvBy + dwB * hot(q + AnchorBX) - dvAy - dwA * hot(q + AnchorAX)
+            hot(q + RelativeVelocity) += dvx * nx + dvy * ny
           p += 1
       c += 1
+
+  /** Once per step, after the substeps: the points that were approaching faster than
+    * `threshold` (see `addFreeMotion`) and pushed during the step bounce, their normal
+    * velocities set to -e times their approach, all at once: Gauss-Seidel passes over them
+    * (impulses clamped as always) until no point is off its target by more than `tolerance`,
+    * m/s, or after `iterations` passes.
+    *
+    * Why all at once and from the approach before the substeps: the substeps stopped each
+    * impact (a plastic collision, its impulse P pressing where the bodies approached), so the
+    * velocities after them are u = u0 + M^-1 J^T P with J u = 0 at the pushing points, u0 the
+    * velocities at the start. Setting every J u = -e J u0 at once then applies e P once more,
+    * and the kinetic energy after is that before minus (1 - e^2) times the energy the plastic
+    * collision took: none lost for e = 1, none ever gained. One pass in turn does not reach it
+    * where a body is in two impacts (the second bounce undoes part of the first), and an
+    * approach measured within the substeps (after other contacts pushed the bodies, or
+    * inflated by warm starting) is no longer J u0: both gained energy (docs/two-solvers.md).
+    */
+  def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double, iterations: Int, tolerance: Double): Unit =
+    val hot = contacts.hot
+    val state = bodies.state
+    var pass = 0
+    var largest = Double.PositiveInfinity
+    while pass < iterations && largest > tolerance do
+      largest = 0.0
+      var c = 0
+      while c < contacts.count do
+        val k = contacts.offset(c)
+        val e = hot(k + Restitution)
+        if e != 0 then
+          val a = contacts.bodyA(c)
+          val b = contacts.bodyB(c)
+          val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
+          val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+          var p = 0
+          while p < contacts.pointCount(c) do
+            val q = k + Header + p * HotPoint
+            if hot(q + RelativeVelocity) < -threshold && hot(q + MaxNormalImpulse) > 0 then
+              val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+              val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
+              val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) + state(sA + AngularVelocity) * rAy
+              val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
+              val vn = dvx * nx + dvy * ny
+              val accumulated = hot(q + NormalImpulse)
+              val total = math.max(accumulated - hot(q + NormalMass) * (vn + e * hot(q + RelativeVelocity)), 0.0)
+              val impulse = total - accumulated
+              if impulse != 0 then
+                // How far the point was from its target (or from where the clamp stops it).
+                val off = math.abs(impulse) / hot(q + NormalMass)
+                if off > largest then largest = off
+                hot(q + NormalImpulse) = total
+                hot(q + TotalNormalImpulse) += impulse
+                bodies.applyImpulse(a, -impulse * nx, -impulse * ny, rAx, rAy)
+                bodies.applyImpulse(b, impulse * nx, impulse * ny, rBx, rBy)
+            p += 1
+        c += 1
+      pass += 1

@@ -71,6 +71,7 @@ private[sims] object ContactTable:
   inline val BiasRate = 4
   inline val MassScale = 5
   inline val ImpulseScale = 6
+  inline val HeaderUsed = 7 // the rest of the header is padding
   inline val Header = 8
   // Offsets in a point's hot block.
   inline val AnchorAX = 0 // arm from A's centre at the start of the step
@@ -83,7 +84,7 @@ private[sims] object ContactTable:
   inline val NormalImpulse = 7 // accumulated (and warm started)
   inline val TangentImpulse = 8
   inline val MaxNormalImpulse = 9 // the largest normal impulse applied in one solve
-  inline val RelativeVelocity = 10 // the fastest normal approach of the step (at its start, then in the solves)
+  inline val RelativeVelocity = 10 // the normal approach: at the start, plus gravity and forces until the point pushed
   inline val TotalNormalImpulse = 11 // the normal impulse applied over the step: its substeps and restitution
   inline val HotPoint = 12
 

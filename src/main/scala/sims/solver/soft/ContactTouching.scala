@@ -12,8 +12,8 @@ import sims.solver.soft.SoftBodies.*
   *
   * A pair that begins is described by its normal, the middle of its touching points (where
   * they are at the end of the step), its approach speed (the fastest closing speed along the
-  * normal the step saw at its points: the impact's) and the normal impulse its points applied
-  * over the step.
+  * normal at its points: at the start of the step, plus what gravity and forces added until
+  * the point pushed, the impact's) and the normal impulse its points applied over the step.
   */
 private[sims] object ContactTouching:
 

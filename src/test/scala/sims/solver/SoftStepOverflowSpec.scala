@@ -1,0 +1,68 @@
+package sims.solver
+
+import org.scalatest.funsuite.AnyFunSuite
+import org.scalatest.matchers.should.Matchers
+import sims.dynamics.{Body, Circle, Rectangle, World}
+import sims.geometry.Vector2D
+import sims.robustness.StateHash
+
+/** A velocity of Double.MaxValue into a contact (issue 25): finite, but the soft step carried
+  * on with positions of 1.5e306 m where the classic step refuses it. Both now throw an
+  * ArithmeticException naming the body and the stage, and leave the world as it was.
+  */
+class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
+
+  /** Two balls overlapping by 1 cm, no gravity; the first one's velocity is `velocity`. */
+  private def pair(solver: Solver, velocity: Vector2D): (World, Body) =
+    val world = World()
+    world.gravity = Vector2D.Null
+    world.solver = solver
+    val a = Circle(0.5, 1)
+    val b = Circle(0.5, 1)
+    b.pos = Vector2D(0.99, 0)
+    val ball = a.asBody
+    world += ball
+    world += b.asBody
+    for _ <- 1 to 3 do world.step() // the soft step has its contacts by then
+    ball.linearVelocity = velocity
+    (world, ball)
+
+  for (solver, stage) <- Seq((SoftStep(), "findContacts"), (ClassicStep, "velocity correction")) do
+    val name = sims.dynamics.StepGuard.solverName(solver)
+    test(s"$name: a velocity of Double.MaxValue into a contact throws, naming the body and '$stage', and restores the world") {
+      val (world, ball) = pair(solver, Vector2D(Double.MaxValue, 0))
+      val before = StateHash(world)
+      val error = intercept[ArithmeticException](world.step())
+      error.getMessage should include("body 0")
+      error.getMessage should include(stage)
+      error.getMessage should include("restored")
+      StateHash(world) shouldBe before
+      ball.linearVelocity = Vector2D(1, 0)
+      world.step() // and the world goes on
+      ball.pos.x should be > 0.0
+    }
+
+  test("SoftStep: an angular velocity of Double.MaxValue into a fixed wall names the spinning body") {
+    val world = World()
+    world.solver = SoftStep()
+    val wall = Rectangle(2, 0.5, 1).asBody
+    wall.fixed = true
+    world += wall
+    val box = Rectangle(0.25, 0.25, 1)
+    box.pos = Vector2D(0, 0.74)
+    val body = box.asBody
+    world += body
+    for _ <- 1 to 3 do world.step()
+    body.angularVelocity = Double.MaxValue
+    val before = StateHash(world)
+    val error = intercept[ArithmeticException](world.step())
+    error.getMessage should include("body 1")
+    error.getMessage should include("findContacts")
+    StateHash(world) shouldBe before
+  }
+
+  test("SoftStep: a speed whose square is finite (1e150 m/s, leaving a contact) still steps: the check is of overflow, not of size") {
+    val (world, ball) = pair(SoftStep(), Vector2D(-1e150, 0))
+    world.step()
+    java.lang.Double.isFinite(ball.pos.x) shouldBe true
+  }
