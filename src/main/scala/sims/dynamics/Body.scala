@@ -1,7 +1,7 @@
 package sims.dynamics
 
 import scala.collection.immutable.ArraySeq
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A rigid body made of one or more shapes (documentation chapter 2).
   *
@@ -105,8 +105,8 @@ final class Body(initialShapes: Shape*):
     x = centreX
     y = centreY
     extent = 0
-    val c = math.cos(-angle)
-    val sn = math.sin(-angle)
+    val c = PortableMath.cos(-angle)
+    val sn = PortableMath.sin(-angle)
     allCentred = true
     for (s, i) <- shapes.zipWithIndex do
       val dx = s.x - x
@@ -134,8 +134,8 @@ final class Body(initialShapes: Shape*):
         shapeArray(i).place(x, y, angle + relativeAngle(i))
         i += 1
     else
-      val c = math.cos(angle)
-      val s = math.sin(angle)
+      val c = PortableMath.cos(angle)
+      val s = PortableMath.sin(angle)
       var i = 0
       while i < shapeArray.length do
         shapeArray(i).place(x + offsetX(i) * c - offsetY(i) * s, y + offsetX(i) * s + offsetY(i) * c,

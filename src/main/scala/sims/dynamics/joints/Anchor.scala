@@ -1,7 +1,7 @@
 package sims.dynamics.joints
 
 import sims.dynamics.Body
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A point fixed on a body, where a joint attaches (SPEC section 3): stored as its offset from
   * the body's centre and the body's rotation at creation, so its current arm is that offset
@@ -28,8 +28,8 @@ private[joints] final class Anchor(val body: Body, point: Vector2D):
     // NaN never equals itself, so the first call and a non-finite rotation always recompute.
     if angle != turnedAngle then
       val turn = angle - rotationAtCreation
-      c = math.cos(turn)
-      s = math.sin(turn)
+      c = PortableMath.cos(turn)
+      s = PortableMath.sin(turn)
       turnedAngle = angle
     armX = offsetX * c - offsetY * s
     armY = offsetX * s + offsetY * c

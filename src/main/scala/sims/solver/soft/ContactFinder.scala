@@ -7,7 +7,7 @@ import sims.collision.manifold.{CapsuleCircleManifold, CapsuleManifold, CircleMa
   PolygonManifold}
 import sims.collision.narrowphase.{Narrowphase, PairKind}
 import sims.dynamics.{Circle, RoundedSegment, Shape, World}
-import sims.geometry.ConvexPolygon
+import sims.geometry.{ConvexPolygon, PortableMath}
 import sims.solver.soft.ContactTable.*
 
 /** The soft step's collision stage, once per step (SOFTSTEP.md sections 2.1 and 4): candidate
@@ -312,7 +312,7 @@ private object ContactFinder:
   val UserMatchDistance: Double = 0.01
 
   /** A contact is computed again once either body turned this far since, rad (cos = 0.98). */
-  val KeepAngle: Double = math.acos(0.98)
+  val KeepAngle: Double = PortableMath.acos(0.98)
 
   /** sin(a) for |a| < KeepAngle, to 1e-9, without the library call (Taylor to a^5). */
   inline def sine(a: Double): Double =
