@@ -78,6 +78,10 @@ class PortableMathSpec extends AnyFunSuite:
     val count = check2("hypot", pairArguments(seed = 5), PortableMath.hypot, StrictMath.hypot)
     assert(count >= 3_000_000)
 
+  test("StrictMath's results give the fingerprints that PortableMathDigestSpec expects on every platform"):
+    assert(PortableMathDigestSpec.digests(StrictMath.sin, StrictMath.cos, StrictMath.atan2, StrictMath.acos,
+      StrictMath.hypot) == PortableMathDigestSpec.Expected)
+
   test("the tables of 2/pi and pi/2 hold those numbers' binary digits (checked with big integers)"):
     // pi * 2^bits by Machin's formula, in exact integer arithmetic.
     val bits = 1800
@@ -155,3 +159,8 @@ object PortableMathSpec:
           if random.nextBoolean() then (s, signed(random.nextDouble())) else (signed(random.nextDouble()), s)
         case _ => (randomBits(random), randomBits(random))
     } ++ crossed
+
+/** Records PortableMathDigestSpec's fingerprints from StrictMath (run with `Test/runMain`). */
+@main def recordPortableMathDigests(): Unit =
+  println(PortableMathDigestSpec.digests(StrictMath.sin, StrictMath.cos, StrictMath.atan2, StrictMath.acos,
+    StrictMath.hypot).map(d => s"\"$d\"").mkString("Seq(", ", ", ")"))
