@@ -85,6 +85,8 @@ lazy val simsJS = (project in file("js"))
     Compile / doc / scalacOptions ++= Seq("-doc-root-content", ((root / baseDirectory).value / "docs" / "api-overview.md").toString),
     libraryDependencies ++= jsTestDependencies.value,
     Test / parallelExecution := false,
+    // The long simulations ran on the JVM already: the Node run keeps CI's time down without them.
+    Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-l", "sims.SlowTest"),
     coverageEnabled := false
   )
 
@@ -99,6 +101,8 @@ lazy val scenesJS = (project in file("scenes/js"))
     Test / unmanagedSources ++= sharedTests((scenes / baseDirectory).value),
     libraryDependencies ++= jsTestDependencies.value,
     Test / parallelExecution := false,
+    // The long simulations ran on the JVM already: the Node run keeps CI's time down without them.
+    Test / testOptions += Tests.Argument(TestFrameworks.ScalaTest, "-l", "sims.SlowTest"),
     coverageEnabled := false
   )
 

@@ -72,8 +72,13 @@ final class Body(initialShapes: Shape*):
     val i = jointPartners.indexWhere(_ eq other)
     if i >= 0 then jointPartners = jointPartners.patch(i, Nil, 1)
 
-  // An edge has no mass: it may only be part of a fixed body (see Edge).
-  private val hasEdge = shapes.exists(_.isInstanceOf[Edge])
+  // An edge has no mass: it may only be part of a fixed body (see Edge). Found with an index,
+  // not `exists`: in a Scala.js program without edges, Scala.js 1.20's full optimizer turns
+  // `exists(_.isInstanceOf[Edge])` into a loop that never calls the iterator's `next()`.
+  private val hasEdge =
+    var k = 0
+    while k < shapes.length && !shapes(k).isInstanceOf[Edge] do k += 1
+    k < shapes.length
 
   shapesChanged()
   if hasEdge then fixed = true
