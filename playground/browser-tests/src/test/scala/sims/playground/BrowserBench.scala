@@ -20,7 +20,13 @@ object BrowserBench:
     val chromium = Chromium.open(File(args(0)))
     try
       chromium.driver.get(chromium.address("index.html"))
-      val results = WebDriverWait(chromium.driver, Duration.ofMinutes(30)).until { d =>
+      // The page is busy between its pauses (a chunk of steps of a big scene on a loaded
+      // machine can take long): a poll that times out is tried again.
+      chromium.driver.manage().timeouts().scriptTimeout(Duration.ofMinutes(2))
+      val wait = WebDriverWait(chromium.driver, Duration.ofMinutes(30))
+      wait.ignoring(classOf[org.openqa.selenium.ScriptTimeoutException])
+      wait.ignoring(classOf[org.openqa.selenium.TimeoutException])
+      val results = wait.until { d =>
         chromium.driver.executeScript("return window.benchResults || null")
       }.asInstanceOf[java.util.Map[String, AnyRef]].asScala
       results.get("error").foreach(e => sys.error(s"the bench page failed: $e"))
