@@ -111,18 +111,20 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
     val canvas = element("canvas")
     val (x, y) = (number(point.get(0)), number(point.get(1)))
     element("play").click()
+    // Held while the state is read: once let go, the box may fall back (how far depends on
+    // the frame rate of a loaded machine).
     Actions(browser.driver)
       .moveToElement(canvas, (x - canvas.getSize.width / 2.0).toInt, (y - canvas.getSize.height / 2.0).toInt)
       .clickAndHold()
-      .moveByOffset(0, -40).pause(Duration.ofMillis(300))
-      .moveByOffset(0, -40).pause(Duration.ofMillis(300))
-      .moveByOffset(30, -40).pause(Duration.ofMillis(600))
-      .release()
+      .moveByOffset(0, -40).pause(Duration.ofMillis(400))
+      .moveByOffset(0, -40).pause(Duration.ofMillis(400))
+      .moveByOffset(0, -40).pause(Duration.ofMillis(1200))
       .perform()
+    val held = bodies()
+    Actions(browser.driver).release().perform()
     element("play").click()
-    val after = bodies()
-    val rise = after(top)._2 - before(top)._2
-    assert(rise > 1.0, s"the top box rose $rise m")
+    val rise = held(top)._2 - before(top)._2
+    assert(rise > 0.3, s"the top box rose $rise m")
 
   test("the page's state after 300 clicks on Step equals the JVM's, bit for bit"):
     choose("Chain", "ClassicStep")
