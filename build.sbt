@@ -1,6 +1,12 @@
 ThisBuild / scalaVersion := "3.3.6"
 ThisBuild / organization := "io.github.sims-scala"
-ThisBuild / version := "0.1.0-SNAPSHOT"
+// The version comes from git tags (sbt-dynver): tag v0.1.0 is version 0.1.0; commits after it,
+// or a clone without tags, get `<last tag or 0.0.0>+<commits since>-<commit>` (plus a date when
+// the work tree has changes). sbt-git reads the repository with the git command, which knows
+// work trees (its built-in JGit does not). Its described version is not used (dynver makes
+// the version) and would make git print "No names found" in a clone without tags.
+useReadableConsoleGit
+ThisBuild / git.gitDescribedVersion := None
 ThisBuild / scalacOptions ++= Seq("-deprecation", "-feature", "-unchecked")
 
 // Property tests draw from one fixed seed, so CI runs are repeatable; change it to explore.
@@ -22,19 +28,12 @@ lazy val root = (project in file("."))
     name := "sims",
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
     licenses := List(License.MIT),
-    homepage := None,
-    // Source control of the project, for the POM (no web address: the scm connection only).
-    pomExtra :=
-      <scm>
-        <connection>scm:git:git@github.com:sims-scala/sims.git</connection>
-        <developerConnection>scm:git:git@github.com:sims-scala/sims.git</developerConnection>
-      </scm>
-      <developers>
-        <developer>
-          <id>sims-scala</id>
-          <name>The SiMS for Scala contributors</name>
-        </developer>
-      </developers>,
+    // Publishing metadata for Maven Central (sbt-ci-release). The project's web address is its
+    // git repository's: read from the `origin` remote of the clone that publishes (see
+    // `Release` in project/), so that no address is written into the build.
+    homepage := Release.homepage(baseDirectory.value),
+    scmInfo := Release.scmInfo(baseDirectory.value),
+    developers := List(Developer("sims-scala", "The SiMS for Scala contributors", "", null)),
     Compile / doc / scalacOptions ++= Seq("-doc-root-content", "docs/api-overview.md"),
     libraryDependencies ++= testDependencies,
     Test / parallelExecution := false,
@@ -75,6 +74,72 @@ lazy val examples = (project in file("examples"))
     // The README picture test compares docs/images with a fresh run of the main job.
     Test / javaOptions += s"-Dsims.root=${(LocalRootProject / baseDirectory).value}",
     Test / parallelExecution := false
+  )
+
+/** Spark for the sweep's Spark back end: its Scala 2.13 artifacts, which Scala 3 code can use
+  * (the standard library is the same). Spark brings scala-xml for Scala 2.13, which clashes
+  * with ScalaTest's for Scala 3 on one classpath; Spark's core does not need it to run jobs.
+  */
+val sparkVersion = "4.2.0"
+def spark(module: String): ModuleID =
+  ("org.apache.spark" %% module % sparkVersion)
+    .cross(CrossVersion.for3Use2_13)
+    .exclude("org.scala-lang.modules", "scala-xml_2.13")
+
+/** What Spark opens of the JDK for itself (its launcher passes the same list). */
+val sparkJavaOptions = Seq(
+  "-XX:+IgnoreUnrecognizedVMOptions",
+  "--add-opens=java.base/java.lang=ALL-UNNAMED",
+  "--add-opens=java.base/java.lang.invoke=ALL-UNNAMED",
+  "--add-opens=java.base/java.lang.reflect=ALL-UNNAMED",
+  "--add-opens=java.base/java.io=ALL-UNNAMED",
+  "--add-opens=java.base/java.net=ALL-UNNAMED",
+  "--add-opens=java.base/java.nio=ALL-UNNAMED",
+  "--add-opens=java.base/java.util=ALL-UNNAMED",
+  "--add-opens=java.base/java.util.concurrent=ALL-UNNAMED",
+  "--add-opens=java.base/java.util.concurrent.atomic=ALL-UNNAMED",
+  "--add-opens=java.base/jdk.internal.ref=ALL-UNNAMED",
+  "--add-opens=java.base/sun.nio.ch=ALL-UNNAMED",
+  "--add-opens=java.base/sun.nio.cs=ALL-UNNAMED",
+  "--add-opens=java.base/sun.security.action=ALL-UNNAMED",
+  "--add-opens=java.base/sun.util.calendar=ALL-UNNAMED",
+  "-Djdk.reflect.useDirectMethodHandle=false",
+  "-Dio.netty.tryReflectionSetAccessible=true"
+)
+
+/** Parameter sweeps: many simulations of one scene over a table of parameters, on all local
+  * cores (the default; no Spark needed) or on Spark. Spark is `Provided`: the local back end,
+  * the CSV and the Parquet writer use none of it, and a Spark cluster brings its own.
+  */
+lazy val sweep = (project in file("sweep"))
+  .dependsOn(scenes)
+  .settings(
+    name := "sims-sweep",
+    publish / skip := true,
+    libraryDependencies ++= testDependencies ++ Seq(
+      spark("spark-core") % Provided,
+      // Only for the tests, which read the sweep's Parquet files back with Spark's reader.
+      spark("spark-sql") % Test
+    ),
+    run / fork := true,
+    run / javaOptions ++= sparkJavaOptions,
+    run / baseDirectory := (LocalRootProject / baseDirectory).value,
+    run / outputStrategy := Some(StdoutOutput),
+    // `sweep/run` runs with Spark on the classpath, for the example's `--backend spark`.
+    Compile / run := Defaults.runTask(Compile / fullClasspath, Compile / run / mainClass, Compile / run / runner).evaluated,
+    Test / fork := true,
+    Test / javaOptions ++= sparkJavaOptions ++ Seq("-Djava.awt.headless=true", "-Xmx2g"),
+    // What a program of the local back end alone runs with: no Spark (a test runs it so).
+    Test / javaOptions += s"-Dsims.sweep.runtimeClasspath=${(Runtime / fullClasspath).value.files.mkString(java.io.File.pathSeparator)}",
+    Test / parallelExecution := false,
+    // `sweep/assembly`: the jar that spark-submit takes (the sweep, the scenes and the library,
+    // and the Scala 3 library; Spark and Scala 2.13's library come with Spark).
+    assembly / assemblyJarName := "sims-sweep-spark.jar",
+    assembly / assemblyOption ~= (_.withIncludeScala(false)),
+    assemblyMergeStrategy := {
+      case PathList("META-INF", "MANIFEST.MF") => MergeStrategy.discard
+      case other => (assembly / assemblyMergeStrategy).value(other)
+    }
   )
 
 /** The documentation book in docs/: `./sbt test` compiles and runs every snippet with mdoc. */
