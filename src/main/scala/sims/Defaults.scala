@@ -3,11 +3,11 @@ package sims
 import sims.geometry.Vector2D
 
 /** Every default of the library, in one place: what a new world, shape, detector, joint, prefab
-  * or solver starts with, and the fixed tolerances of the SPEC. Each is a named constant; the
+  * or solver starts with, and the fixed tolerances of SiMS 1.2. Each is a named constant; the
   * classes take them from here (docs/architecture.md lists them).
   */
 object Defaults:
-  // ---- World (SPEC section 1)
+  // ---- World
 
   /** Duration of one time step, s. */
   val TimeStep: Double = 1.0 / 60
@@ -19,7 +19,7 @@ object Defaults:
   val Gravity: Vector2D = Vector2D(0, -9.81)
 
   /** Linear (m/s) and angular (rad/s) speeds below this become exactly 0 in the classic step's
-    * phase 5 (SPEC section 2).
+    * phase 5.
     */
   val RestingSpeed: Double = 0.0001
 
@@ -60,7 +60,7 @@ object Defaults:
     */
   val MaxCandidatePairs: Int = 1_000_000
 
-  /** Overlap the classic contact's position correction tolerates, m (SPEC section 4). */
+  /** Overlap the classic contact's position correction tolerates, m (as in SiMS 1.2). */
   val ToleratedOverlap: Double = 0.01
 
   // ---- Mouse joint
@@ -100,7 +100,7 @@ object Defaults:
   /** Density of a pylon's nodes, kg/m^2. */
   val PylonDensity: Double = 10
 
-  // ---- SoftStep (SOFTSTEP.md section 1)
+  // ---- SoftStep
 
   /** Substeps per time step. */
   val Substeps: Int = 4
@@ -142,7 +142,7 @@ object Defaults:
     */
   val ContactLoadDepth: Double = 0.002
 
-  // ---- Contact events and bullets (issue 15)
+  // ---- Contact events and bullets
 
   /** A pair of shapes that touched stays touching, for its contact events, while its shapes
     * are at most this far apart (hysteresis: a box resting on the ground that loses its contact

@@ -466,6 +466,10 @@ class World(makeDetector: World => Detector = GridDetector(_)):
   // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
   private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
 
+  /** The world in a line: its time, how many bodies and joints it has, and its solver. */
+  override def toString: String =
+    s"World(time = $time s, ${bodyBuffer.size} bodies, ${jointBuffer.size} joints, solver = ${_solver})"
+
 /** The world's own stage names, the helpers of `World.step`'s errors and the queries' defaults. */
 object World:
   /** The queries' default filter: every shape. */
