@@ -57,9 +57,15 @@ lazy val scenes = (project in file("scenes"))
 /** Headless runs, the renderer and the viewer of the scenes. */
 lazy val examples = (project in file("examples"))
   .dependsOn(scenes)
+  // `examples/stage` writes a launcher script, examples/target/universal/stage/bin/sims-examples,
+  // whose errors for a bad command line are the program's own (under `examples/run` sbt adds
+  // its "nonzero exit code" lines, which read like a build failure).
+  .enablePlugins(JavaAppPackaging)
   .settings(
     name := "sims-examples",
     publish / skip := true,
+    Compile / mainClass := Some("sims.examples.Main"),
+    executableScriptName := "sims-examples",
     libraryDependencies ++= testDependencies,
     run / fork := true,
     run / connectInput := true,
@@ -123,10 +129,17 @@ lazy val sweep = (project in file("sweep"))
     ),
     run / fork := true,
     run / javaOptions ++= sparkJavaOptions,
+    run / javaOptions += s"-Dlog4j2.configurationFile=${baseDirectory.value / "src" / "run" / "log4j2.properties"}",
+    // Spark in local mode listens on the loopback address only.
+    run / envVars += "SPARK_LOCAL_IP" -> "127.0.0.1",
+    Test / envVars += "SPARK_LOCAL_IP" -> "127.0.0.1",
+    Test / javaOptions += s"-Dlog4j2.configurationFile=${baseDirectory.value / "src" / "run" / "log4j2.properties"}",
     run / baseDirectory := (LocalRootProject / baseDirectory).value,
     run / outputStrategy := Some(StdoutOutput),
     // `sweep/run` runs with Spark on the classpath, for the example's `--backend spark`.
     Compile / run := Defaults.runTask(Compile / fullClasspath, Compile / run / mainClass, Compile / run / runner).evaluated,
+    Compile / runMain := Defaults.runMainTask(Compile / fullClasspath, Compile / run / runner).evaluated,
+    Compile / mainClass := Some("sims.sweep.examples.Main"),
     Test / fork := true,
     Test / javaOptions ++= sparkJavaOptions ++ Seq("-Djava.awt.headless=true", "-Xmx2g"),
     // What a program of the local back end alone runs with: no Spark (a test runs it so).
@@ -142,23 +155,55 @@ lazy val sweep = (project in file("sweep"))
     }
   )
 
-/** The documentation book in docs/: `./sbt test` compiles and runs every snippet with mdoc. */
+/** Renders the book's sources into docs/, where readers of the repository see each snippet's result. */
+val bookRender = taskKey[Unit]("Renders the book's sources (docs/src) into the pages in docs/")
+/** Fails when a page in docs/ is not what its source renders to (run by `docs/test`). */
+val bookCheck = taskKey[Unit]("Fails if a page in docs/ differs from its rendered source")
+/** The book and the API reference in one folder. */
+val book = taskKey[File]("Builds the book (rendered) and the API reference (Scaladoc) into target/book")
+
+/** The documentation book: sources in docs/src/, rendered by mdoc into docs/ (checked in, so
+  * that each snippet's printed result shows on a code host). `./sbt test` renders every
+  * snippet again and fails if a page in docs/ differs from its fresh rendering.
+  */
 // mdoc wants its input apart from the project's base directory: the base holds no sources.
 lazy val docs = (project in file("target/mdoc-project"))
-  .dependsOn(root)
+  .dependsOn(sweep)
   .enablePlugins(MdocPlugin)
   .settings(
     name := "sims-docs",
     publish / skip := true,
-    // Build output stays out of docs/, which mdoc reads.
+    // The sweeps chapter shows the Spark back end's code (compiled, not run).
+    libraryDependencies += spark("spark-core") % Provided,
+    // Build output stays out of docs/.
     target := (ThisBuild / baseDirectory).value / "target" / "docs",
-    mdocIn := (ThisBuild / baseDirectory).value / "docs",
+    mdocIn := (ThisBuild / baseDirectory).value / "docs" / "src",
+    // A fresh rendering, compared with (or copied to) the pages in docs/.
     mdocOut := target.value / "mdoc",
     // mdoc adds -deprecation and -unchecked itself; given twice, the compiler complains once
     // per snippet ("Flag -unchecked set repeatedly"). Deprecations are still reported.
     Compile / scalacOptions := Seq("-feature"),
-    Test / test := mdoc.toTask("").value
+    bookRender := {
+      mdoc.toTask("").value
+      Book.copyPages(mdocOut.value, (ThisBuild / baseDirectory).value / "docs", streams.value.log)
+    },
+    bookCheck := {
+      mdoc.toTask("").value
+      Book.check(mdocOut.value, (ThisBuild / baseDirectory).value / "docs")
+    },
+    Test / test := bookCheck.value,
+    book := {
+      mdoc.toTask("").value
+      val base = (ThisBuild / baseDirectory).value
+      Book.assemble(mdocOut.value, base / "docs" / "images", (root / Compile / doc).value,
+        base / "target" / "book", streams.value.log)
+    }
   )
+
+addCommandAlias("bookRender", "docs/bookRender")
+// What CI will run once every source is formatted: fails on any file scalafmt would change.
+addCommandAlias("formatCheck", "scalafmtCheckAll; scalafmtSbtCheck")
+addCommandAlias("book", "docs/book")
 
 /** Benchmarks (JMH) of SiMS against jBox2D and dyn4j; the peers are bench-only dependencies. */
 lazy val bench = (project in file("bench"))

@@ -1,7 +1,9 @@
 package sims.sweep
 
-/** The parameters of a sweep's runs: every combination of a grid's axes, or a random sample. */
-sealed trait Parameters extends Serializable:
+/** The parameters of a sweep's runs: every combination of a grid's axes, a random sample, or a set of
+  * a user's own (a row must depend on its index and the seed alone).
+  */
+trait Parameters extends Serializable:
   /** The parameters' names, in the table's order. */
   def names: IndexedSeq[String]
 

@@ -47,7 +47,7 @@ final case class ResultTable(parameterNames: IndexedSeq[String], metricNames: In
       results.indices.iterator.map(i => all.map(_.text(i)).mkString(","))
     lines.mkString("", "\n", "\n")
 
-  /** Writes [[toCsv]] to `path` (UTF-8). */
+  /** Writes `toCsv` to `path` (UTF-8). */
   def writeCsv(path: Path): Unit = Files.write(path, toCsv.getBytes(StandardCharsets.UTF_8))
 
   /** Writes the table to `path` as a Parquet file (one row group, plain encoding, uncompressed). */

@@ -75,8 +75,8 @@ object Main:
         table.writeParquet(options.out.resolve("cannon-sweep.parquet"))
         System.setProperty("java.awt.headless", "true")
         val picture = Heatmaps.draw(table, "speed", "restitution", "friction", "fallen",
-          s"Cannon: circles of the pyramid fallen after ${CannonSweep.Steps / 60} s, by muzzle speed (m/s), restitution and friction")
+          s"Cannon: boxes of the pyramid fallen after ${CannonSweep.Steps / 60} s, by muzzle speed (m/s), restitution and friction")
         ImageIO.write(picture, "png", options.out.resolve("cannon-sweep.png").toFile)
         val fallen = table("fallen")
-        println(f"fallen: ${fallen.min}%.0f to ${fallen.max}%.0f of 36 circles, ${fallen.sum / fallen.size}%.1f on average")
+        println(f"fallen: ${fallen.min}%.0f to ${fallen.max}%.0f of 36 boxes, ${fallen.sum / fallen.size}%.1f on average")
         println(s"wrote ${options.out.resolve("cannon-sweep")}.csv, .parquet and .png")

@@ -31,8 +31,11 @@ object SparkBackend:
     */
   def using[A](master: String, appName: String = "sims-sweep")(body: SparkBackend => A): A =
     val configuration = new SparkConf().setAppName(appName).setIfMissing("spark.master", master)
-      // The driver's web page is of no use to a sweep; without it, no port is opened.
+      // The driver's web page is of no use to a sweep; without it, no port is opened for it.
       .setIfMissing("spark.ui.enabled", "false")
+    // In local mode every task runs in this JVM: the driver listens on the loopback address only.
+    if configuration.get("spark.master").startsWith("local") then
+      configuration.setIfMissing("spark.driver.bindAddress", "127.0.0.1").setIfMissing("spark.driver.host", "127.0.0.1")
     val context = SparkContext.getOrCreate(configuration)
     try body(SparkBackend(context))
     finally context.stop()

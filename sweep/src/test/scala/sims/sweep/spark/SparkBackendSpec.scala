@@ -27,7 +27,8 @@ class SparkBackendSpec extends AnyFunSuite:
     val file = Files.createTempFile("sweep", ".parquet")
     try
       local.writeParquet(file)
-      val session = SparkSession.builder().master("local[1]").config("spark.ui.enabled", "false").getOrCreate()
+      val session = SparkSession.builder().master("local[1]").config("spark.ui.enabled", "false")
+        .config("spark.driver.bindAddress", "127.0.0.1").config("spark.driver.host", "127.0.0.1").getOrCreate()
       try
         val frame = session.read.parquet(file.toString)
         assert(frame.columns.toSeq == local.columns.map(_.name))
@@ -50,7 +51,8 @@ class SparkBackendSpec extends AnyFunSuite:
     val file = Files.createTempFile("empty", ".parquet")
     try
       table.writeParquet(file)
-      val session = SparkSession.builder().master("local[1]").config("spark.ui.enabled", "false").getOrCreate()
+      val session = SparkSession.builder().master("local[1]").config("spark.ui.enabled", "false")
+        .config("spark.driver.bindAddress", "127.0.0.1").config("spark.driver.host", "127.0.0.1").getOrCreate()
       try assert(session.read.parquet(file.toString).count() == 0)
       finally session.stop()
     finally Files.delete(file)
