@@ -33,7 +33,7 @@ lazy val root = (project in file("."))
     // `Release` in project/), so that no address is written into the build.
     homepage := Release.homepage(baseDirectory.value),
     scmInfo := Release.scmInfo(baseDirectory.value),
-    developers := List(Developer("sims-scala", "The SiMS for Scala contributors", "", null)),
+    developers := List(Developer("sims-scala", "The SiMS for Scala contributors", "", homepage.value.orNull)),
     Compile / doc / scalacOptions ++= Seq("-doc-root-content", "docs/api-overview.md"),
     libraryDependencies ++= testDependencies,
     Test / parallelExecution := false,
