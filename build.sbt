@@ -23,7 +23,10 @@ lazy val testDependencies = Seq(
 /** The library: only the Scala standard library at run time. */
 lazy val root = (project in file("."))
   // `./sbt test` builds and runs them too.
-  .aggregate(LocalProject("scenes"), LocalProject("examples"), LocalProject("docs"), LocalProject("bench"))
+  .aggregate(
+    LocalProject("scenes"), LocalProject("examples"), LocalProject("sweep"), LocalProject("docs"),
+    LocalProject("bench")
+  )
   .settings(
     name := "sims",
     description := "SiMS, the Simple Mechanics Simulator: a small 2D rigid-body physics library",
