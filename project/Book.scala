@@ -26,7 +26,7 @@ object Book {
 
   /** Fails, naming the pages, if docs/ is not what the sources render to. */
   def check(rendered: File, docs: File): Unit = {
-    val fresh = pages(rendered).map(f => f.getName -> IO.read(f)).toMap
+    val fresh = pages(rendered).filterNot(f => NotPages(f.getName)).map(f => f.getName -> IO.read(f)).toMap
     val present = pages(docs).filterNot(f => NotPages(f.getName)).map(f => f.getName -> IO.read(f)).toMap
     val stale = fresh.keys.filter(name => present.get(name) != fresh.get(name)).toSeq.sorted
     val orphans = present.keys.filterNot(fresh.contains).toSeq.sorted

@@ -152,9 +152,9 @@ private[sims] final class ContactFinder:
       p += 1
 
   /** Turns contact c of two circles on their bodies' centres to the normal they meet along:
-    * the line of their centres when, moving as at the start of the step, they first touch
-    * within it, or else when they come closest within it (the start's when they touch
-    * already). Its arms then lie along that normal, from each centre to the outline, and its
+    * the line of their centres when, moving as at the start of the step, they first touch,
+    * or when they come closest within the step if they pass each other (the start's when they
+    * touch already). Its arms then lie along that normal, from each centre to the outline, and its
     * separation is the gap along it.
     *
     * Why: the contact keeps its normal for the whole step, and a contact found before the balls
@@ -180,8 +180,10 @@ private[sims] final class ContactFinder:
     val gap = dx * dx + dy * dy - reach * reach
     if gap > 0 && half < 0 then // apart and approaching
       val discriminant = half * half - speed2 * gap
-      val impact = if discriminant >= 0 then (-half - math.sqrt(discriminant)) / speed2 else Double.PositiveInfinity
-      val t = if impact <= timeStep then impact else math.min(-half / speed2, timeStep)
+      // The impact, however far ahead (then the gap along its line stays open all step, and a
+      // push at the step's end, which a contact about to close makes, bounces along it), or
+      // the closest approach within the step for balls that pass each other.
+      val t = if discriminant >= 0 then (-half - math.sqrt(discriminant)) / speed2 else math.min(-half / speed2, timeStep)
       val hot = contacts.hot
       val k = contacts.offset(c)
       val ix = dx + t * vx; val iy = dy + t * vy
