@@ -1,7 +1,7 @@
 package sims.bench
 
 import sims.dynamics.{Body, World}
-import sims.dynamics.joints.DistanceJoint
+import sims.dynamics.joints.{DistanceJoint, RevoluteJoint}
 import sims.scenes.Scene
 import sims.solver.{ClassicStep, Solver}
 
@@ -17,6 +17,7 @@ object SimsBuilder:
       dynamic.flatMap(b => Seq(b.linearVelocity.x, b.linearVelocity.y, b.angularVelocity)).toArray
     def jointLengths: Array[Double] =
       world.joints.collect { case j: DistanceJoint => (j.connection2 - j.connection1).length }.toArray
+    def pinGaps: Array[Double] = world.joints.collect { case j: RevoluteJoint => j.separation }.toArray
 
   /** The scene's world with the bench's settings and `solver` (for tools that look inside a
     * SiMS step).
