@@ -242,6 +242,10 @@ class World(makeDetector: World => Detector = GridDetector(_))
 
   private[sims] def time_=(t: Double): Unit = _time = t
 
+  /** The world in a line: its time, how many bodies and joints it has, and its solver. */
+  override def toString: String =
+    s"World(time = $time s, ${bodyBuffer.size} bodies, ${jointBuffer.size} joints, solver = ${_solver})"
+
 /** The queries' default filter. */
 object World:
   /** The queries' default filter: every shape. */

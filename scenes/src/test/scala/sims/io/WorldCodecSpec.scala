@@ -283,20 +283,32 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     world += RevoluteJoint(pivot, bob, Vector2D(5, 4))
     world
 
-  test("a world saved in format version 3 loads and steps to the same bits, its joint's impulse and contacts kept") {
-    val stream = getClass.getResourceAsStream("/sims/io/world-format-3.bin")
-    val bytes = try stream.readAllBytes() finally stream.close()
-    bytes(7) shouldBe 3
-    val loaded = WorldCodec.load(bytes)
+  test("a world saved in format version 3 loads: its state, its joint's impulse and contacts, the soft step's settings") {
+    def fixture(): World =
+      val stream = getClass.getResourceAsStream("/sims/io/world-format-3.bin")
+      val bytes = try stream.readAllBytes() finally stream.close()
+      bytes(7) shouldBe 3
+      WorldCodec.load(bytes)
+    val loaded = fixture()
+    // The state it was saved in: the same scene stepped as many times by today's library comes
+    // close, not to the bit (the soft step's restitution and the elementary functions changed
+    // since the file was written).
     val world = formatThreeWorld()
     for _ <- 1 to 25 do world.step()
-    StateHash(loaded) shouldBe StateHash(world)
-    loaded.solver shouldBe SoftStep()
+    for (a, b) <- loaded.bodies.zip(world.bodies) do
+      (a.pos - b.pos).length should be < 1e-4
+      math.abs(a.rotation - b.rotation) should be < 1e-4
+    loaded.solver shouldBe SoftStep() // a version-3 world takes the detector's grid settings: the defaults
+    val soft = loaded.carriedStates.collectFirst { case s: sims.solver.soft.SoftWorkspace => s }.get
+    soft.table.committed.count should be >= 2 // the box's and the ball's contacts with the ground
+    soft.joints.impulsesOf(loaded.joints.head).exists(_ != 0) shouldBe true
+    // It steps on as any world, to the same bits from the same bytes.
+    val again = fixture()
     for _ <- 1 to 30 do
-      world.step()
       loaded.step()
-    StateHash(loaded) shouldBe StateHash(world)
-    WorldCodec.save(loaded) shouldBe WorldCodec.save(world)
+      again.step()
+    StateHash(again) shouldBe StateHash(loaded)
+    WorldCodec.save(again).sameElements(WorldCodec.save(loaded)) shouldBe true
   }
 
   test("save is canonical: worlds equal to the bit save to the same bytes, whatever their contact table's past") {
