@@ -6,7 +6,7 @@ import sims.scenes.Scene
 import sims.solver.{ClassicStep, Solver}
 
 /** Builds a scene in SiMS: the scene's own world (a layout's as `sims.scenes.Layout.world`
-  * makes it), with the bench's iterations and the solver asked for.
+  * makes it), with the bench's iterations, the solver asked for and sleeping off.
   */
 object SimsBuilder:
   private final class Built(val world: World, val dynamic: IndexedSeq[Body]) extends EngineScene:
@@ -26,6 +26,8 @@ object SimsBuilder:
     val world = scene.build().world
     world.iterations = Settings.Iterations
     world.solver = solver
+    // The bench measures the step's work: no body falls asleep (the peers' sleeping is off too).
+    world.enableSleep = false
     world
 
   /** Builds the scene, stepped by `solver`. */

@@ -5,17 +5,20 @@ import sims.solver.SoftStep
 /** Whether the stacked scenes stand under the soft step: for each scene given (default
   * `pyramid-50` and `large_pyramid`), `--seconds S` of simulated time (default 10), then the
   * largest distance of a free body from its start and the largest speed, with the step's mean
-  * time. For development (the tests hold the targets: `scenes/.../StandingSpec.scala`).
+  * time. Sleeping is off, as in the bench (`--sleep` turns it on, as the soft step's default).
+  * For development.
   */
 object Stand:
   def main(args: Array[String]): Unit =
     var seconds = 10.0
+    var sleep = false
     var solver = SoftStep()
     val scenes = Seq.newBuilder[String]
     val it = args.iterator
     while it.hasNext do
       it.next() match
         case "--seconds" => seconds = it.next().toDouble
+        case "--sleep" => sleep = true
         case "--persistence" => solver = solver.copy(contactPersistence = it.next().toDouble)
         case "--load-depth" => solver = solver.copy(contactLoadDepth = it.next().toDouble)
         case "--hertz" => solver = solver.copy(contactHertz = it.next().toDouble)
@@ -28,6 +31,7 @@ object Stand:
     for name <- chosen do
       val scene = Settings.scene(name)
       val world = SimsBuilder.world(scene, solver)
+      world.enableSleep = sleep
       val free = world.bodies.filterNot(_.fixed).toIndexedSeq
       val start = free.map(b => (b.x, b.y))
       val steps = math.round(seconds / world.timeStep).toInt

@@ -6,7 +6,9 @@ import sims.solver.{ClassicStep, SoftStep}
 
 /** Every example scene after 200 steps under each step, bit for bit: a refactoring of either
   * step, of the collision stages or of the world keeps all of these. A deliberate change of a
-  * step's results updates its column in the same commit, saying why.
+  * step's results updates its column in the same commit, saying why. The soft column changed
+  * last for sleeping (on by default: the scenes' resting islands fall asleep within the 200
+  * steps; with sleeping off every hash was as before).
   */
 class SceneHashesSpec extends AnyFunSuite:
   import SceneHashesSpec.*
@@ -31,30 +33,30 @@ object SceneHashesSpec:
 
   /** Per scene: the hash under ClassicStep, then under SoftStep. */
   val Expected: Seq[(String, (String, String))] = Seq(
-    "BallStack" -> ("e7269e6171ba7c59", "a604754e55002563"),
+    "BallStack" -> ("e7269e6171ba7c59", "a5f19feed782da0d"),
     "Chain" -> ("329c2311e46b8cad", "5c5de6d517f064aa"),
-    "Stacking" -> ("219a2f406068eed8", "f2ffbd6921455f29"),
-    "Restitution" -> ("b29165b804fd1ce2", "19ab2388aebf524d"),
+    "Stacking" -> ("219a2f406068eed8", "416ecc7fc2ca471e"),
+    "Restitution" -> ("b29165b804fd1ce2", "e5e8b86be34cdff1"),
     "Friction" -> ("528283d4e2da794e", "7cca8f606a2b989e"),
     "Spring" -> ("ef30dc87c96e4fc0", "07360467ebed9b2a"),
     "Net" -> ("d58678c398eaf33a", "497fb724392c53f9"),
-    "Cup" -> ("ba654fa1de9da85f", "9952a038503be334"),
+    "Cup" -> ("ba654fa1de9da85f", "a992967246a25b15"),
     "Carriage" -> ("ca3eaf59383651ed", "c38fb23e5d9efd2c"),
     "Wave" -> ("9a529cbc8bebf5ad", "1f9ebdbbffc9eb1c"),
     "Atom" -> ("596f109ecd66714b", "5f9211213e5adfd3"),
     "Cannon" -> ("94d0f0e9283ef7fb", "60655afb7a6bdb61"),
-    "Pylon" -> ("398ec6b1d15a72d7", "020f17e1f6abaadd"),
+    "Pylon" -> ("398ec6b1d15a72d7", "7c184fbfcc0d40e5"),
     "Ragdoll" -> ("268f8d75638fda2c", "7149f1b04886a2ca"),
-    "CompositeShape" -> ("749a252abb71bf86", "24d74a937868d873"),
-    "Pyramid" -> ("6fa8bba0b103b7ea", "ccb2364c69e22aa8"),
+    "CompositeShape" -> ("749a252abb71bf86", "10f83db863b16457"),
+    "Pyramid" -> ("6fa8bba0b103b7ea", "337e370be403e1e9"),
     "Pile" -> ("38e39babb7ebe442", "aa52dcf68dac2734"),
-    "NewtonsCradle" -> ("2bc439aacf19d9c3", "4920297da61fdb59"),
-    "Dominoes" -> ("33e2a058c6177ac8", "b86fb4fc0d2b06b7"),
+    "NewtonsCradle" -> ("2bc439aacf19d9c3", "fe4868e00552b5bc"),
+    "Dominoes" -> ("33e2a058c6177ac8", "e035cbc88d5a9cd9"),
     // Its hook pushes bodies at ray-cast hits: the circle cast measured from the line's closest
     // point (exact far from the origin) rounds them differently; the steps are unchanged by that.
-    "Queries" -> ("4722ae2b3909f55a", "4f0f0e1b76406c93"),
-    "Filtering" -> ("b84810ed2b2eb563", "6ef0037d951fa5aa"),
-    "Shapes" -> ("fcd4608cf04ed625", "53949f24a3673c14"),
+    "Queries" -> ("4722ae2b3909f55a", "cc0b6bf3231a9026"),
+    "Filtering" -> ("b84810ed2b2eb563", "eaeeb078666a7580"),
+    "Shapes" -> ("fcd4608cf04ed625", "40ae23a364a0e28e"),
     "Sensors" -> ("57e39aba131d15e2", "c158e6920325844b"),
     "Bullet" -> ("85e2f8af98216aea", "00fbbcbc2216a7de")
   )
