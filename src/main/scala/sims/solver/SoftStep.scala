@@ -100,9 +100,9 @@ final case class SoftStep(
     loadBodies(world, workspace)
     if resting(world, workspace) then
       // Every body sleeps (or is fixed), and nothing changed: the step moves nothing, and the
-      // contacts stay as they are.
+      // contacts, and so the pairs touching, stay as they are.
       world.stage = "finish"
-      ContactTouching.report(workspace.table.committed, workspace.bodies, world.contactTracker)
+      world.contactTracker.touchAllOpen()
       workspace.islands.update(world, workspace.bodies, workspace.table.committed, world.jointList)
       return
     world.stage = "findContacts"

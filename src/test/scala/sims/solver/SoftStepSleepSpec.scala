@@ -37,6 +37,34 @@ class SoftStepSleepSpec extends AnyFunSuite with Matchers:
     world.awakeBodyCount shouldBe 1
   }
 
+  test("a settled ball pit sleeps whole; its steps asleep keep every contact, its touching pairs and its placements") {
+    val world = World()
+    world.solver = SoftStep()
+    val walls = Seq(box(3, 0.5, Vector2D(0, -0.5)), box(0.5, 2, Vector2D(-2.5, 1.5)), box(0.5, 2, Vector2D(2.5, 1.5)))
+    walls.foreach { w => w.fixed = true; world += w }
+    val balls = for row <- 0 until 10; column <- 0 until 18 yield
+      val ball = Circle(0.1, 1).asBody
+      ball.pos = Vector2D(-1.8 + 0.21 * column + 0.01 * (row % 2), 0.12 + 0.22 * row)
+      ball
+    balls.foreach(world += _)
+    settle(world, balls)
+    val touching = world.contactEvents.touching
+    val contacts = world.contacts.map(c => (c.shape1, c.shape2, c.normalImpulses))
+    val placements = balls.map(_.pos)
+    touching.size should be > balls.size
+    for _ <- 1 to 30 do
+      world.step()
+      world.contactEvents.begins shouldBe empty
+      world.contactEvents.ends shouldBe empty
+    world.contactEvents.touching shouldBe touching
+    world.contacts.map(c => (c.shape1, c.shape2, c.normalImpulses)) shouldBe contacts
+    balls.map(_.pos) shouldBe placements
+    // Pushing one ball wakes its island, the whole pit, which then settles again.
+    balls(5).applyImpulse(Vector2D(0, 0.05))
+    balls.forall(_.isAwake) shouldBe true
+    settle(world, balls)
+  }
+
   test("islands apart sleep apart: a moving box keeps its own island awake, not the resting one") {
     val (world, _, boxes) = stackWorld(2)
     val slider = box(0.25, 0.25, Vector2D(-4, 0.25))
