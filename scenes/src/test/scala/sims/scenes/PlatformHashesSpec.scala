@@ -30,9 +30,9 @@ object PlatformHashesSpec:
     * soft ones last for sleeping, on by default: Pyramid, BallStack and Ragdoll fall asleep).
     */
   val Expected: Seq[(String, (String, String))] = Seq(
-    "Pyramid" -> ("dd5baa49fafec7ac", "b27884e2b801c1e3"),
-    "BallStack" -> ("8db9759ae6989d8b", "443ea64d406cbc31"),
-    "Ragdoll" -> ("e86196be7f7d6310", "931eecb5c83c2fb8"),
+    "Pyramid" -> ("dd5baa49fafec7ac", "337e370be403e1e9"),
+    "BallStack" -> ("8db9759ae6989d8b", "a2bdf8b7f45e6daf"),
+    "Ragdoll" -> ("e86196be7f7d6310", "a0bab0bc80cbe34f"),
     "Chain" -> ("8abde10dfa3f46b7", "2e6d6a37f8bd57ef"),
     "Carriage" -> ("b61f7c5294100851", "10bae530ef552481")
   )
