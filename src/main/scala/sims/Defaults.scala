@@ -148,6 +148,18 @@ object Defaults:
     */
   val ContactLoadDepth: Double = 0.002
 
+  // ---- Sleeping (the soft step's; see docs/two-solvers.md, Sleeping)
+
+  /** A body slower than this (its centre's speed, and its extent times its angular speed) is
+    * resting, for sleeping, m/s.
+    */
+  val SleepThreshold: Double = 0.05
+
+  /** An island of touching or jointed bodies falls asleep once every body in it has been
+    * resting this long, s.
+    */
+  val TimeToSleep: Double = 0.5
+
   // ---- Contact events and bullets
 
   /** A pair of shapes that touched stays touching, for its contact events, while its shapes

@@ -36,6 +36,8 @@ private[sims] final class PairTracker(ordered: Boolean):
   // Whether this step's `finishStep` made `working` the shown events.
   private var finished = false
   private var lastFlipped = false
+  // Set by `touchAllOpen`: this step keeps every open pair, and reports no other.
+  private var allOpenTouched = false
   private val separation = ShapeSeparation()
 
   /** Counts the changes of the shown events (steps finished, undone, restored). */
@@ -44,6 +46,7 @@ private[sims] final class PairTracker(ordered: Boolean):
   /** Starts a step: no pair touched yet, no begins, no ends. */
   def beginStep(): Unit =
     stamp += 1
+    allOpenTouched = false
     working.clear()
     finished = false
 
@@ -64,6 +67,11 @@ private[sims] final class PairTracker(ordered: Boolean):
       working.addBegin(key, first, second)
       true
 
+  /** Reports every open pair touching again, and no other (a step in which nothing moved: the
+    * open pairs stay as they are), without looking at each: `finishStep` ends none.
+    */
+  def touchAllOpen(): Unit = allOpenTouched = true
+
   /** Describes the pair `touch` just began: the unit normal (nx, ny) from `touch`'s `a` towards
     * `b` (turned round if the pair's first shape is `b`), a point, the approach speed and the
     * normal impulse.
@@ -78,7 +86,7 @@ private[sims] final class PairTracker(ordered: Boolean):
   def finishStep(world: World): Unit =
     var slot = 0
     val slots = open.slots
-    while slot < slots do
+    while slot < slots && !allOpenTouched do
       if open.keyAt(slot) >= 0 && open.stampAt(slot) != stamp then
         if keeps(open.firstAt(slot), open.secondAt(slot), open.keyAt(slot), world) then open.stamp(slot, stamp)
         else

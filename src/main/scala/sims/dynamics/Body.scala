@@ -170,6 +170,96 @@ final class Body(initialShapes: Shape*):
       fy += forceY
       tau += rx * forceY - ry * forceX
 
+  // Sleeping (used by the soft step; see docs/two-solvers.md, Sleeping).
+  private var _awake = true
+  private var _enableSleep = true
+  private var _sleepThreshold = sims.Defaults.SleepThreshold
+  /** How long the body has been resting (slower than `sleepThreshold`), s. */
+  private[sims] var sleepTime: Double = 0
+  /** The sleeping island the body belongs to while asleep (bodies that fell asleep together,
+    * and wake together), or -1 while awake.
+    */
+  private[sims] var sleepIsland: Long = -1
+  /** A fixed body placed by the user since the last step: the bodies asleep on it wake. */
+  private[sims] var movedByUser: Boolean = false
+
+  /** Whether the body is awake (default true). A body falls asleep under the soft step with the
+    * island of bodies it touches or is jointed to, once all of them have been slower than their
+    * `sleepThreshold` for `Defaults.TimeToSleep`; a sleeping body is not moved by the step, and
+    * costs (nearly) nothing, until something wakes its island: a contact with an awake body, a
+    * joint to one, the user setting its velocity, position, a force or an impulse, or a body of
+    * its island leaving the world. A fixed body is always awake. The classic step ignores sleep.
+    */
+  def isAwake: Boolean = _awake
+
+  /** `true` wakes the body and its island; `false` puts the body to sleep at once, its
+    * velocities set to 0 (it wakes again as above: next to an awake body, at the next step).
+    */
+  def isAwake_=(value: Boolean): Unit =
+    if value then wake()
+    else if !_fixed && _awake then
+      _awake = false
+      vx = 0; vy = 0; w = 0
+      sleepIsland = if world != null then world.newSleepIsland() else Long.MaxValue // numbered when added
+
+  /** Whether the body may fall asleep (default true; the world has its own switch,
+    * `World.enableSleep`). Turning it off wakes the body.
+    */
+  def enableSleep: Boolean = _enableSleep
+
+  /** Lets the body fall asleep or keeps it awake (waking it). */
+  def enableSleep_=(value: Boolean): Unit =
+    _enableSleep = value
+    if !value then wake()
+
+  /** The speed below which the body counts as resting, for sleeping, m/s (default
+    * `Defaults.SleepThreshold`): its centre's speed and its `extent` times its angular speed.
+    */
+  def sleepThreshold: Double = _sleepThreshold
+
+  /** Sets the resting speed; finite and at least 0 (0: the body never rests, never sleeps). */
+  def sleepThreshold_=(value: Double): Unit =
+    if !(value >= 0) || value.isInfinite then
+      throw IllegalArgumentException(s"sleepThreshold must be finite and at least 0, got $value")
+    _sleepThreshold = value
+
+  /** Wakes the body and every body asleep in its island. */
+  private[sims] def wake(): Unit =
+    sleepTime = 0
+    if !_awake then
+      val island = sleepIsland
+      _awake = true
+      sleepIsland = -1
+      if world != null && island >= 0 then world.wakeIsland(island)
+
+  /** Wakes the body alone (its island is being woken by the world, body by body). */
+  private[sims] def wakeAlone(): Unit =
+    _awake = true
+    sleepTime = 0
+    sleepIsland = -1
+
+  /** Puts the body to sleep in `island` (the soft step, for a resting island). */
+  private[sims] def fallAsleep(island: Long): Unit =
+    _awake = false
+    sleepIsland = island
+    vx = 0; vy = 0; w = 0
+
+  /** Puts back a sleep state as saved (snapshots, save files). */
+  private[sims] def restoreSleep(awake: Boolean, time: Double, island: Long): Unit =
+    _awake = awake
+    sleepTime = time
+    sleepIsland = island
+
+  /** A change the user made to the body: wakes it (and its island), or, for a fixed body, the
+    * bodies asleep on it.
+    */
+  private def touchedByUser(): Unit =
+    if _fixed then
+      if world != null then
+        movedByUser = true
+        world.fixedBodyMoved()
+    else wake()
+
   private var _bullet = false
 
   /** Whether this body is a bullet (default false): after each step, under either solver, its
@@ -193,12 +283,15 @@ final class Body(initialShapes: Shape*):
   def force_=(f: Vector2D): Unit =
     Vector2D.requireFinite("force", f)
     fx = f.x; fy = f.y
+    if f.x != 0 || f.y != 0 then wake()
 
   /** Resulting torque about the centre of mass, N m. */
   def torque: Double = tau
 
   /** Sets the resulting torque; must be finite. */
-  def torque_=(t: Double): Unit = tau = Vector2D.requireFinite("torque", t)
+  def torque_=(t: Double): Unit =
+    tau = Vector2D.requireFinite("torque", t)
+    if t != 0 then wake()
 
   /** Velocity of the centre of mass, m/s. */
   def linearVelocity: Vector2D = Vector2D(vx, vy)
@@ -207,12 +300,15 @@ final class Body(initialShapes: Shape*):
   def linearVelocity_=(v: Vector2D): Unit =
     Vector2D.requireFinite("linearVelocity", v)
     vx = v.x; vy = v.y
+    if v.x != 0 || v.y != 0 then wake()
 
   /** Angular velocity, rad/s, counter-clockwise. */
   def angularVelocity: Double = w
 
   /** Sets the angular velocity; must be finite. */
-  def angularVelocity_=(value: Double): Unit = w = Vector2D.requireFinite("angularVelocity", value)
+  def angularVelocity_=(value: Double): Unit =
+    w = Vector2D.requireFinite("angularVelocity", value)
+    if value != 0 then wake()
 
   /** Position of the centre of mass, world coordinates. */
   def pos: Vector2D = Vector2D(x, y)
@@ -223,6 +319,7 @@ final class Body(initialShapes: Shape*):
     x = newPos.x; y = newPos.y
     placeShapes()
     if world != null then world.shapesMoved()
+    touchedByUser()
 
   /** Rotation in radians, counter-clockwise; 0 when the body was made. */
   def rotation: Double = angle
@@ -232,6 +329,7 @@ final class Body(initialShapes: Shape*):
     angle = Vector2D.requireFinite("rotation", newRotation)
     placeShapes()
     if world != null then world.shapesMoved()
+    touchedByUser()
 
   /** Mass in kg: the shapes' sum, or positive infinity when fixed. */
   def mass: Double = if _fixed then Double.PositiveInfinity else freeMass
@@ -249,17 +347,23 @@ final class Body(initialShapes: Shape*):
     if !value && hasEdge then
       throw IllegalArgumentException(s"fixed must stay true for a body with an Edge (edges have no mass), got false")
     placements += 1 // the inverse masses change: cached effective masses must be recomputed
+    val changed = value != _fixed
+    if changed then wake() // a body asleep wakes with its island
     _fixed = value
     if value then
       vx = 0; vy = 0; w = 0
     updateInverseMass()
+    // A body just fixed is a fixed body the user moved: what slept on it wakes.
+    if changed && value then touchedByUser()
 
   /** Adds `f` to the force on the centre of mass; nothing happens when the body is fixed.
     * Fails, changing nothing, if `f` or the total force would not be finite.
     */
   def applyForce(f: Vector2D): Unit =
     Vector2D.requireFinite("force", f)
-    if !_fixed then addForce(f, null, 0)
+    if !_fixed then
+      addForce(f, null, 0)
+      wake()
 
   /** Applies `f` at `point` (world coordinates): changes force and torque. Fails, changing
     * nothing, if an argument, the torque about the centre or the totals would not be finite.
@@ -267,7 +371,9 @@ final class Body(initialShapes: Shape*):
   def applyForce(f: Vector2D, point: Vector2D): Unit =
     Vector2D.requireFinite("force", f)
     Vector2D.requireFinite("point", point)
-    if !_fixed then addForce(f, point, (point.x - x) * f.y - (point.y - y) * f.x)
+    if !_fixed then
+      addForce(f, point, (point.x - x) * f.y - (point.y - y) * f.x)
+      wake()
 
   /** Adds force `f` and torque `t` (of `f` at `point`, or 0 with no point) after checking that
     * every sum stays finite, so that an overflow is reported here, where it is given, and not by
@@ -307,6 +413,7 @@ final class Body(initialShapes: Shape*):
       throw IllegalArgumentException(
         s"impulse $p$at would make the body's velocities ($newX, $newY) and $newW rad/s, not finite")
     vx = newX; vy = newY; w = newW
+    if !_fixed then wake()
 
   /** Velocity of the body's point at `point` (world coordinates): `v + w x r`. */
   def velocityOfPoint(point: Vector2D): Vector2D =
@@ -319,4 +426,3 @@ final class Body(initialShapes: Shape*):
 
   /** The body by its shapes, for errors about its mass (its position may not exist yet). */
   private def describe: String = s"Body(${shapes.mkString(", ")})"
-

@@ -50,12 +50,61 @@ class World(makeDetector: World => Detector = GridDetector(_))
   /** Whether phase 6 (position correction) runs. */
   var enablePositionCorrection: Boolean = true
 
+  private var _enableSleep = true
+  /** The last sleeping island's number (see `Body.isAwake`). */
+  private[sims] var sleepIslands: Long = 0
+  /** Counts the changes a sleeping world must see: bodies and joints added or removed, fixed
+    * bodies moved by the user. A soft step in which every body sleeps skips its collision
+    * stage only while the count is what it was at the last full step.
+    */
+  private[sims] var revision: Long = 0
+
+  /** Whether bodies may fall asleep (default true): islands of touching or jointed bodies
+    * that have rested for `Defaults.TimeToSleep` stop being simulated until something wakes
+    * them (see `Body.isAwake` and docs/two-solvers.md, Sleeping). Only the soft step puts bodies to sleep.
+    * Turning it off wakes every body.
+    */
+  def enableSleep: Boolean = _enableSleep
+
+  /** Lets islands fall asleep, or wakes every body and keeps them awake. */
+  def enableSleep_=(value: Boolean): Unit =
+    _enableSleep = value
+    if !value then wakeAll()
+
+  /** Number of bodies awake (fixed bodies count as awake). */
+  def awakeBodyCount: Int = bodyBuffer.count(_.isAwake)
+
+  /** A new sleeping island's number. */
+  private[sims] def newSleepIsland(): Long =
+    sleepIslands += 1
+    sleepIslands
+
+  /** Wakes every body asleep in `island`. */
+  private[sims] def wakeIsland(island: Long): Unit =
+    var i = 0
+    while i < bodyBuffer.length do
+      val b = bodyBuffer(i)
+      if !b.isAwake && b.sleepIsland == island then b.wakeAlone()
+      i += 1
+
+  /** Wakes every body. */
+  private[sims] def wakeAll(): Unit =
+    var i = 0
+    while i < bodyBuffer.length do
+      bodyBuffer(i).wakeAlone()
+      i += 1
+
+  /** A fixed body was placed by the user: the next soft step wakes what sleeps on it. */
+  private[sims] def fixedBodyMoved(): Unit = revision += 1
+
   /** What `step()` runs (default [[sims.solver.ClassicStep]]); may be switched at any time. */
   def solver: Solver = _solver
 
   /** Chooses the solver of the next steps; must not be null. */
   def solver_=(value: Solver): Unit =
     if value == null then throw IllegalArgumentException("solver must not be null")
+    // Only the soft step keeps bodies asleep; any other starts with every body awake.
+    if !(value eq _solver) then wakeAll()
     _solver = value
 
   /** Duration of one step in seconds (default 1/60). */
@@ -129,6 +178,9 @@ class World(makeDetector: World => Detector = GridDetector(_))
     shapeList.add(body)
     shapesMoved()
     countFlags(body, 1)
+    revision += 1
+    // A body put to sleep outside a world sleeps in an island of its own.
+    if !body.isAwake && body.sleepIsland == Long.MaxValue then body.sleepIsland = newSleepIsland()
     this
 
   /** Adds a joint; fails if it is already in this or another world, or if the solver cannot
@@ -143,12 +195,18 @@ class World(makeDetector: World => Detector = GridDetector(_))
     jointBuffer += joint
     joint.world = this
     if !joint.collideConnected then joint.keepApart(true)
+    joint.node1.wake(); joint.node2.wake()
+    revision += 1
     this
 
   /** Removes a body (joints on it must be removed too before the next step). */
   def -=(body: Body): this.type =
     val i = bodyBuffer.indexWhere(_ eq body)
     if i >= 0 then
+      // Its island wakes (a body asleep on it would hang in the air); a fixed body may have
+      // held any island up: every body wakes.
+      if body.fixed then wakeAll() else body.wake()
+      revision += 1
       bodyBuffer.remove(i)
       body.world = null
       body.index = -1
@@ -163,6 +221,8 @@ class World(makeDetector: World => Detector = GridDetector(_))
   def -=(joint: Joint): this.type =
     val i = jointBuffer.indexWhere(_ eq joint)
     if i >= 0 then
+      joint.node1.wake(); joint.node2.wake()
+      revision += 1
       jointBuffer.remove(i)
       joint.world = null
       if !joint.collideConnected then joint.keepApart(false)

@@ -1,9 +1,10 @@
 package sims.dynamics
 
 /** The dynamic state of a world: time; for every body, position, rotation, velocities, force
-  * and torque; what the solvers carry from step to step (the soft step's contact table and its
-  * joints' impulses, its warm start); and the pairs of shapes touching and overlapping sensors
-  * (the contact and sensor events' open pairs).
+  * and torque, and whether it sleeps (its resting time and island); what the solvers carry from
+  * step to step (the soft step's contact table and its joints' impulses, its warm start); and
+  * the pairs of shapes touching and overlapping sensors (the contact and sensor events' open
+  * pairs).
   * Restoring it and stepping again replays the run, and its events, bit for bit.
   */
 final class WorldState private ():
@@ -46,6 +47,8 @@ final class WorldState private ():
       values(k) = b.x; values(k + 1) = b.y; values(k + 2) = b.angle
       values(k + 3) = b.vx; values(k + 4) = b.vy; values(k + 5) = b.w
       values(k + 6) = b.fx; values(k + 7) = b.fy; values(k + 8) = b.tau
+      values(k + 9) = if b.isAwake then 1 else 0; values(k + 10) = b.sleepTime
+      values(k + 11) = b.sleepIsland.toDouble // exact: island numbers stay far below 2^53
       i += 1
 
   private[sims] def load(world: World): Unit =
@@ -71,8 +74,13 @@ final class WorldState private ():
       b.x = values(k); b.y = values(k + 1); b.angle = values(k + 2)
       b.vx = values(k + 3); b.vy = values(k + 4); b.w = values(k + 5)
       b.fx = values(k + 6); b.fy = values(k + 7); b.tau = values(k + 8)
+      b.restoreSleep(values(k + 9) != 0, values(k + 10), values(k + 11).toLong)
       b.placeShapes()
+      // Islands numbered after it stay apart from the restored ones.
+      if b.sleepIsland >= world.sleepIslands && b.sleepIsland != Long.MaxValue then world.sleepIslands = b.sleepIsland
       i += 1
+    // The next soft step collides its pairs again, even if every body sleeps.
+    world.revision += 1
 
   /** The joints of the world, to check that a restored world has the same ones. */
   private def saveJoints(world: World): Unit =
@@ -84,5 +92,5 @@ final class WorldState private ():
       i += 1
 
 private[sims] object WorldState:
-  private val PerBody = 9
+  private val PerBody = 12
   def empty: WorldState = new WorldState()

@@ -9,11 +9,14 @@ import sims.dynamics.World
   * binary, doubles as their exact IEEE 754 bits, in this order:
   *   1. the magic bytes "SIMS" and the format version (an Int, [[FormatVersion]]);
   *   2. settings: time step, iterations, gravity, the two flags, time, the grid detector's cell
-  *      side and pair limit, the solver (ClassicStep, or SoftStep with all its parameters);
+  *      side and pair limit, the solver (ClassicStep, or SoftStep with all its parameters),
+  *      `enableSleep`;
   *   3. bodies in order: each shape (Circle, Rectangle, RegularPolygon, Capsule, Edge or
   *      HullPolygon with its arguments and material, collidable, placement, filter bits,
   *      sensor), the body's frame (mass, inertia, the shapes' offsets) and state (placement,
-  *      velocities, force, torque, fixed, bullet); then each shape's transient shapes, by index;
+  *      velocities, force, torque, fixed, bullet, and sleep: `enableSleep`, `sleepThreshold`,
+  *      awake, the time it has rested and its sleeping island); then each shape's transient
+  *      shapes, by index;
   *   4. joints in order (Distance, Spring, Revolute, Prismatic, Mouse): bodies by index, the
   *      anchors and body placements they were made from, their settings, soft-step impulses
   *      and `collideConnected`;
@@ -29,9 +32,9 @@ object WorldCodec:
   /** The version of the format `save` writes; `load` reads this one and every earlier one
     * (version 1 had no capsules, edges, hull polygons, filter bits or `collideConnected`;
     * version 2 no sensors, bullets or open event pairs; version 3 no broadphase settings of the
-    * soft step's own: it used the detector's).
+    * soft step's own: it used the detector's; version 5 and earlier no sleeping: every body awake).
     */
-  val FormatVersion: Int = 4
+  val FormatVersion: Int = 6
 
   /** The bytes of `world`'s state; fails with an IllegalArgumentException naming a type it cannot
     * save.

@@ -13,7 +13,11 @@ import sims.solver.soft.joints.JointConstraint
 private[io] object WorldReader:
   import Tags.*
 
+  // The sleep states read with the bodies, by body, until the joints are in.
+  private type SleepStates = scala.collection.mutable.HashMap[Body, (Boolean, Double, Long)]
+
   def read(bytes: Array[Byte], world: World): World =
+    val sleepStates: SleepStates = scala.collection.mutable.HashMap.empty
     if bytes == null then throw IllegalArgumentException("bytes must not be null")
     if world == null then throw IllegalArgumentException("world must not be null")
     if world.bodies.nonEmpty || world.joints.nonEmpty then
@@ -27,11 +31,14 @@ private[io] object WorldReader:
         throw IllegalArgumentException(s"a saved world of format version $version; this library reads versions " +
           s"1 to ${WorldCodec.FormatVersion}")
       settings(in, world, version)
-      val bodies = IndexedSeq.fill(in.readInt())(body(in, version))
+      val bodies = IndexedSeq.fill(in.readInt())(body(in, version, sleepStates))
       bodies.foreach(world += _)
       val shapes = world.shapes
       for s <- shapes do s.transientShapes = Seq.fill(in.readInt())(shapes(in.readInt())).toSet
       for _ <- 0 until in.readInt() do world += joint(in, world, bodies, version)
+      for b <- bodies; (awake, time, island) <- sleepStates.remove(b) do b.restoreSleep(awake, time, island)
+      // New islands are numbered after the saved ones.
+      world.sleepIslands = bodies.map(_.sleepIsland).foldLeft(world.sleepIslands)(math.max)
       if in.readBoolean() then contacts(in, world)
       if version >= 3 then world.restoreEvents(openPairs(in, shapes), openPairs(in, shapes))
       if in.available() != 0 then throw IllegalArgumentException(s"${in.available()} bytes after the saved world")
@@ -66,8 +73,10 @@ private[io] object WorldReader:
         SoftStep(substeps, d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7), d(8), d(9), d(10), directJoints, gridSide,
           maxPairs)
       case tag => throw IllegalArgumentException(s"unknown solver tag $tag in the saved world")
+    // Version 6 added sleeping; an earlier world had every body awake and may sleep now.
+    if version >= 6 then world.enableSleep = in.readBoolean()
 
-  private def body(in: DataInputStream, version: Int): Body =
+  private def body(in: DataInputStream, version: Int, sleepStates: SleepStates): Body =
     val count = in.readInt()
     val shapes = new Array[Shape](count)
     val frame = new Array[Double](3 * count)
@@ -93,6 +102,13 @@ private[io] object WorldReader:
     b.allCentred = in.readBoolean()
     b.fixed = in.readBoolean()
     if version >= 3 then b.bullet = in.readBoolean()
+    if version >= 6 then
+      b.enableSleep = in.readBoolean()
+      b.sleepThreshold = in.readDouble()
+      val awake = in.readBoolean()
+      val time = in.readDouble()
+      // Put back once the joints are in (adding a joint wakes its bodies).
+      sleepStates(b) = (awake, time, in.readLong())
     b.updateInverseMass()
     b.vx = vx; b.vy = vy; b.w = w
     b

@@ -59,6 +59,7 @@ private[io] object WorldWriter:
         out.writeDouble(soft.gridSide)
         out.writeInt(soft.maxPairs)
       case other => unsupported("solver", other)
+    out.writeBoolean(world.enableSleep)
 
   private def body(out: DataOutputStream, b: Body): Unit =
     out.writeInt(b.shapes.length)
@@ -72,6 +73,11 @@ private[io] object WorldWriter:
     out.writeBoolean(b.allCentred)
     out.writeBoolean(b.fixed)
     out.writeBoolean(b.bullet)
+    out.writeBoolean(b.enableSleep)
+    out.writeDouble(b.sleepThreshold)
+    out.writeBoolean(b.isAwake)
+    out.writeDouble(b.sleepTime)
+    out.writeLong(b.sleepIsland)
 
   private def shape(out: DataOutputStream, s: Shape): Unit =
     s match

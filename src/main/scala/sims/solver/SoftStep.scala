@@ -25,8 +25,9 @@ import sims.solver.soft.SoftBodies.*
   *      turn, at most `Defaults.RestitutionIterations`, until none is off its target by more
   *      than `Defaults.RestitutionTolerance`), so that restitution 1 keeps the kinetic energy
   *   7. `finish`: placements and velocities back into the bodies, forces cleared; the
-  *      touching contacts reported to the world's contact events; the contacts with their
-  *      impulses kept for the next step
+  *      touching contacts reported to the world's contact events; sleeping (islands of bodies
+  *      that rested long enough fall asleep, see [[sims.dynamics.Body.isAwake]]); the contacts
+  *      with their impulses kept for the next step
   *   8. bullets (`Body.bullet`) swept against fixed shapes ([[ContinuousCollision]]), in a world
   *      that has them
   *
@@ -97,6 +98,13 @@ final case class SoftStep(
     advanceTime(world)
     world.stage = "loadBodies"
     loadBodies(world, workspace)
+    if resting(world, workspace) then
+      // Every body sleeps (or is fixed), and nothing changed: the step moves nothing, and the
+      // contacts, and so the pairs touching, stay as they are.
+      world.stage = "finish"
+      world.contactTracker.touchAllOpen()
+      workspace.islands.update(world, workspace.bodies, workspace.table.committed, world.jointList)
+      return
     world.stage = "findContacts"
     findContacts(world, workspace)
     world.stage = "prepare"
@@ -146,8 +154,46 @@ final case class SoftStep(
   private def advanceTime(world: World): Unit = world.advanceTime()
 
   private def loadBodies(world: World, workspace: SoftWorkspace): Unit =
-    workspace.bodies.load(world.bodyList)
-    workspace.joints.sort(world, workspace.bodies, directJoints)
+    val bodies = workspace.bodies
+    bodies.load(world.bodyList)
+    if bodies.anyAsleep then wakeJointed(world, bodies)
+    workspace.joints.sort(world, bodies, directJoints)
+
+  /** Wakes the sleeping islands jointed to an awake body that moves (a joint made since they
+    * fell asleep, or a partner woken by the user) or to a body outside the world, until none is.
+    */
+  private def wakeJointed(world: World, bodies: SoftBodies): Unit =
+    val joints = world.jointList
+    var woke = true
+    while woke do
+      woke = false
+      var j = 0
+      while j < joints.length do
+        val a = joints(j).node1.index
+        val b = joints(j).node2.index
+        // A joint to a body outside the world (a mouse joint's target) keeps its body awake.
+        val sleeper =
+          if a < 0 || b < 0 then (if a >= 0 && bodies.asleep(a) then a else if b >= 0 && bodies.asleep(b) then b else -1)
+          else if bodies.asleep(a) && bodies.invMass(b) != 0 then a
+          else if bodies.asleep(b) && bodies.invMass(a) != 0 then b
+          else -1
+        if sleeper >= 0 then
+          bodies.wakeIsland(bodies.bodies(sleeper).sleepIsland)
+          woke = true
+        j += 1
+
+  /** Whether the step has nothing to do: every body asleep or fixed, no fixed body placed by the
+    * user, collision detection on, no body or joint added or removed since the last step that
+    * collided its pairs, whose contacts are still the committed ones.
+    */
+  private def resting(world: World, workspace: SoftWorkspace): Boolean =
+    val bodies = workspace.bodies
+    if !bodies.anyAsleep || !world.enableCollisionDetection || workspace.collidedRevision != world.revision ||
+        world.bulletCount > 0 then false
+    else
+      var i = 0
+      while i < bodies.count && bodies.invMass(i) == 0 && !bodies.bodies(i).movedByUser do i += 1
+      i == bodies.count
 
   private def findContacts(world: World, workspace: SoftWorkspace): Unit =
     if world.enableCollisionDetection then
@@ -272,7 +318,9 @@ final case class SoftStep(
     world.guard("soft step substeps", Checked.Velocities)
     world.guard("soft step substeps", Checked.Positions)
     ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker)
+    workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
     workspace.table.commit()
+    workspace.collidedRevision = if world.enableCollisionDetection then world.revision else -1
 
 /** Checks of [[SoftStep]]'s parameters. */
 object SoftStep:

@@ -2,10 +2,10 @@ package sims.bench
 
 import org.dyn4j.collision.CategoryFilter
 import org.dyn4j.dynamics.{Body, ContinuousDetectionMode}
-import org.dyn4j.dynamics.joint.DistanceJoint
-import org.dyn4j.geometry.{Convex, Geometry, MassType}
+import org.dyn4j.dynamics.joint.{DistanceJoint, RevoluteJoint}
+import org.dyn4j.geometry.{Convex, Geometry, MassType, Vector2}
 import org.dyn4j.world.World
-import sims.scenes.{Layout, Outline}
+import sims.scenes.{JointKind, Layout, Outline}
 
 /** Builds a layout in dyn4j: body for body and joint for joint, with the bench's iterations
   * and the peers' settings.
@@ -27,6 +27,13 @@ object Dyn4jBuilder:
       val out = Array.newBuilder[Double]
       world.getJoints.forEach {
         case j: DistanceJoint[?] => out += j.getAnchor1.distance(j.getAnchor2)
+        case _ => ()
+      }
+      out.result()
+    def pinGaps: Array[Double] =
+      val out = Array.newBuilder[Double]
+      world.getJoints.forEach {
+        case j: RevoluteJoint[?] => out += j.getAnchor1.distance(j.getAnchor2)
         case _ => ()
       }
       out.result()
@@ -58,11 +65,17 @@ object Dyn4jBuilder:
       if spec.noCollideGroup > 0 then fixture.setFilter(filter(spec.noCollideGroup))
       body.setMass(if spec.fixed then MassType.INFINITE else MassType.NORMAL)
       body.translate(spec.centre.x, spec.centre.y)
+      body.setLinearVelocity(spec.velocity.x, spec.velocity.y)
       world.addBody(body)
       body
     for joint <- layout.joints do
       val (a, b) = (bodies(joint.body1), bodies(joint.body2))
-      val distance = DistanceJoint[Body](a, b, a.getWorldCenter, b.getWorldCenter)
-      distance.setRestDistance(layout.length(joint))
-      world.addJoint(distance)
+      joint.kind match
+        case JointKind.Distance =>
+          val distance = DistanceJoint[Body](a, b, a.getWorldCenter, b.getWorldCenter)
+          distance.setRestDistance(layout.length(joint))
+          world.addJoint(distance)
+        case JointKind.Revolute =>
+          val pin = layout.pin(joint)
+          world.addJoint(RevoluteJoint[Body](a, b, Vector2(pin.x, pin.y)))
     Built(world, layout.freeBodies.map(bodies))

@@ -14,8 +14,11 @@ trait EngineScene:
   /** x and y velocity and angular velocity of every free body, in the order the scene lists them. */
   def dynamicVelocities: Array[Double]
 
-  /** Current distance of the centres each joint connects, in order. */
+  /** Current distance of the centres each distance joint connects, in order. */
   def jointLengths: Array[Double]
+
+  /** Current gap between the two bodies' points of each revolute joint's pin, in order, m. */
+  def pinGaps: Array[Double]
 
 /** The engines compared: SiMS with each of its two solvers, and the peers. */
 enum Engine(val label: String):

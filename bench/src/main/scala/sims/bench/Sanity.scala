@@ -1,6 +1,7 @@
 package sims.bench
 
-import sims.scenes.{BallStack, Ballpit, BoxPyramid, BoxStack, HeavyStack, Layout, Outline, Region, Scene, SwingingChain}
+import sims.scenes.{BallStack, Ballpit, BoxPyramid, BoxStack, HeavyStack, JointGrid, LargePyramid, Layout, ManyPyramids,
+  Outline, Region, Scene, Smash, SwingingChain}
 
 /** Checks that a scene still looks like what it should after a run, with the same criteria
   * for every engine, so that a fast wrong answer cannot win. Containers, initial positions and
@@ -21,6 +22,12 @@ object Sanity:
     * about 20% while the chain swings.)
     */
   val ChainStretch: Double = 0.25
+  /** A joint grid's pin may open by this much: a quarter of the grid's 1 m pitch, m. */
+  val PinGap: Double = 0.25
+  /** Without gravity or fixed bodies a scene's momentum stays what it was; this fraction of it
+    * may be lost or gained (single precision in jBox2D, the solvers' tolerances).
+    */
+  val MomentumTolerance: Double = 0.01
 
   /** Checks the scene; a scene without criteria of its own is only checked for NaN. */
   def check(scene: Scene, built: EngineScene): Result =
@@ -31,6 +38,10 @@ object Sanity:
       case stack: BoxStack => standing(states, stack.layout)
       case HeavyStack => standing(states, HeavyStack.layout)
       case chain: SwingingChain => joined(built.jointLengths, chain.layout)
+      case pyramid: LargePyramid => standing(states, pyramid.layout)
+      case pyramids: ManyPyramids => standing(states, pyramids.layout)
+      case grid: JointGrid => pinned(built.pinGaps)
+      case smash: Smash => momentumKept(built.dynamicVelocities, smash.layout)
       case pit: Ballpit =>
         val radii = pit.layout.freeBodies.map(i => pit.layout.bodies(i).outline match
           case Outline.Circle(radius) => radius
@@ -76,3 +87,27 @@ object Sanity:
     val largest = lengths.indices.map(i => math.abs(lengths(i) - rest(i))).max
     Result(worst <= ChainStretch,
       f"largest joint error ${largest * 1000}%.1f mm, chain length ${lengths.sum}%.2f m (rest ${rest.sum}%.2f m)")
+
+  /** Every pin of a joint grid open by at most [[PinGap]]. */
+  private def pinned(gaps: Array[Double]): Result =
+    val largest = if gaps.isEmpty then 0.0 else gaps.max
+    val mean = if gaps.isEmpty then 0.0 else gaps.sum / gaps.length
+    Result(largest <= PinGap, f"largest pin gap ${largest * 1000}%.1f mm, mean ${mean * 1000}%.2f mm")
+
+  /** The free bodies' momentum within [[MomentumTolerance]] of the start's (a scene without
+    * gravity or fixed bodies).
+    */
+  private def momentumKept(velocities: Array[Double], layout: Layout): Result =
+    val free = layout.freeBodies
+    val masses = free.map { i =>
+      val body = layout.bodies(i)
+      body.density * (body.outline match
+        case Outline.Circle(radius) => math.Pi * radius * radius
+        case Outline.Box(halfWidth, halfHeight) => 4 * halfWidth * halfHeight)
+    }
+    val startX = free.indices.map(k => masses(k) * layout.bodies(free(k)).velocity.x).sum
+    val startY = free.indices.map(k => masses(k) * layout.bodies(free(k)).velocity.y).sum
+    val nowX = free.indices.map(k => masses(k) * velocities(3 * k)).sum
+    val nowY = free.indices.map(k => masses(k) * velocities(3 * k + 1)).sum
+    val error = math.hypot(nowX - startX, nowY - startY) / math.hypot(startX, startY)
+    Result(error <= MomentumTolerance, f"momentum ($nowX%.1f, $nowY%.1f) kg m/s, start ($startX%.1f, $startY%.1f): off by ${error * 100}%.2f%%")

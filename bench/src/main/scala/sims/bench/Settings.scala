@@ -8,8 +8,8 @@ import sims.scenes.{BenchScenes, Scene, Scenes}
   * `ballstack` is the examples' BallStack, in SiMS only.
   *
   * Every engine runs with 10 velocity and 10 position iterations (the scenes give gravity and
-  * time step); the peers run with sleeping and continuous collision detection off (SiMS has
-  * neither).
+  * time step); every engine runs with sleeping off, the peers with continuous collision
+  * detection off (SiMS has none for these scenes: no bullets).
   */
 object Settings:
   /** Velocity and position iterations. */

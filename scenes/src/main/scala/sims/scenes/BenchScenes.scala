@@ -2,15 +2,17 @@ package sims.scenes
 
 /** The benchmark scenes: `ballpit-N`, `pyramid-R` and `chain-N` for any size, laid out as
   * [[Layout]]s that every engine of the bench builds, and `ballstack` (SiMS only), the
-  * examples' [[BallStack]]; and the quality report's layouts: `stack-N`, `heavy-stack` and
-  * `drop-eE` (restitution E from 0 to 1).
+  * examples' [[BallStack]]; Box2D v3's own benchmark scenes `large_pyramid`, `many_pyramids`,
+  * `joint_grid` and `smash` (layouts too, at the benchmark's sizes or smaller); and the
+  * quality report's layouts: `stack-N`, `heavy-stack` and `drop-eE` (restitution E from 0 to 1).
   */
 object BenchScenes:
   /** The ball pits benchmarked. */
   val BallpitSizes: Seq[Int] = Seq(500, 1000, 2000, 4000, 8000, 16000)
 
   /** The scenes benchmarked, in the order of the bench's reports. */
-  val standard: Seq[Scene] = BallpitSizes.map(Ballpit(_)) ++ Seq(BoxPyramid(20), SwingingChain(100), BallStack)
+  val standard: Seq[Scene] = BallpitSizes.map(Ballpit(_)) ++ Seq(BoxPyramid(20), SwingingChain(100), BallStack) ++
+    Seq(LargePyramid(), ManyPyramids(), JointGrid(), Smash())
 
   /** The bench's names of the standard scenes: their names in lower case. */
   val names: Seq[String] = standard.map(_.name.toLowerCase)
@@ -21,10 +23,15 @@ object BenchScenes:
 
   private val Family = "(ballpit|pyramid|chain|stack)-([0-9]{1,6})".r
   private val DropFamily = "drop-e([0-9]+(?:\\.[0-9]+)?)".r
+  private val Box2DFamily = "(large_pyramid|joint_grid)-([0-9]{1,4})".r
+  private val GridFamily = "(many_pyramids|smash)-([0-9]{1,4})x([0-9]{1,4})".r
 
   /** The benchmark scene with this name, ignoring case: `ballpit-N`, `pyramid-R`, `chain-N`,
     * `stack-N` for any size they accept, `drop-eE` for E from 0 to 1 (`drop-e0.5`),
-    * `heavy-stack` or `ballstack`.
+    * `heavy-stack` or `ballstack`; Box2D's `large_pyramid`, `many_pyramids`, `joint_grid` and
+    * `smash`, or smaller ones: `large_pyramid-B` (B boxes in the bottom row), `joint_grid-S`
+    * (S x S discs), `many_pyramids-RxC` (R rows of C pyramids), `smash-CxR` (a wall of C
+    * columns and R rows).
     */
   def find(name: String): Option[Scene] = name.toLowerCase match
     case Family("ballpit", n) if n.toInt > 0 => Some(Ballpit(n.toInt))
@@ -32,6 +39,14 @@ object BenchScenes:
     case Family("chain", n) if n.toInt > 1 => Some(SwingingChain(n.toInt))
     case Family("stack", n) if n.toInt > 0 => Some(BoxStack(n.toInt))
     case DropFamily(e) if e.toDouble <= 1 => Some(Drop(e.toDouble))
+    case "large_pyramid" => Some(LargePyramid())
+    case "many_pyramids" => Some(ManyPyramids())
+    case "joint_grid" => Some(JointGrid())
+    case "smash" => Some(Smash())
+    case Box2DFamily("large_pyramid", n) if n.toInt > 0 => Some(LargePyramid(n.toInt))
+    case Box2DFamily("joint_grid", n) if n.toInt >= 7 => Some(JointGrid(n.toInt))
+    case GridFamily("many_pyramids", r, c) if r.toInt > 0 && c.toInt > 0 => Some(ManyPyramids(r.toInt, c.toInt))
+    case GridFamily("smash", c, r) if c.toInt > 0 && r.toInt > 0 => Some(Smash(c.toInt, r.toInt))
     case "heavy-stack" => Some(HeavyStack)
     case "ballstack" => Some(BallStack)
     case _ => None

@@ -1,7 +1,7 @@
 package sims.scenes
 
 import sims.dynamics.{Body, Shape, World}
-import sims.dynamics.joints.DistanceJoint
+import sims.dynamics.joints.{DistanceJoint, RevoluteJoint}
 import sims.geometry.{PortableMath, Vector2D}
 
 /** The outline of a layout body's one shape, centred on the body's centre, never rotated. */
@@ -22,10 +22,12 @@ enum Outline:
   *   as in every layout here (a [[Drop]] gives both its shapes the pair's value).
   * @param noCollideGroup 0: collides with every other body; g > 0: with none of group g
   *   (as Box2D's negative group index -g).
+  * @param velocity the body's linear velocity at the start, m/s
   */
 final case class SceneBody(outline: Outline, centre: Vector2D, fixed: Boolean, density: Double, friction: Double,
-    restitution: Double, noCollideGroup: Int = 0):
+    restitution: Double, noCollideGroup: Int = 0, velocity: Vector2D = Vector2D.Null):
   require(if fixed then density >= 0 else density > 0, s"density $density of a ${if fixed then "fixed" else "free"} body")
+  require(!fixed || velocity == Vector2D.Null, s"a fixed body with velocity $velocity")
   require(friction >= 0 && restitution >= 0, s"friction $friction, restitution $restitution")
   require(noCollideGroup >= 0, s"no-collide group $noCollideGroup")
 
@@ -42,6 +44,9 @@ object SceneBody:
   def box(centre: Vector2D, halfWidth: Double, halfHeight: Double, fixed: Boolean = false): SceneBody =
     standard(Outline.Box(halfWidth, halfHeight), centre, fixed, 0)
 
+  /** A square box of the standard material, `halfSide` each way from its centre. */
+  def square(centre: Vector2D, halfSide: Double): SceneBody = box(centre, halfSide, halfSide)
+
   /** A circle of the standard material, in no-collide group `noCollideGroup`. */
   def circle(centre: Vector2D, radius: Double, fixed: Boolean = false, noCollideGroup: Int = 0): SceneBody =
     standard(Outline.Circle(radius), centre, fixed, noCollideGroup)
@@ -49,10 +54,18 @@ object SceneBody:
   private def standard(outline: Outline, centre: Vector2D, fixed: Boolean, group: Int): SceneBody =
     SceneBody(outline, centre, fixed, if fixed then 0 else 1, Layout.StandardFriction, 0, group)
 
-/** A rigid distance joint holding the centres of the layout's bodies `body1` and `body2`
-  * (indices into [[Layout.bodies]]) at their initial distance; the two never collide.
+/** The kinds of joint a [[Layout]] holds. */
+enum JointKind:
+  /** A rigid distance joint holding the two centres at their initial distance. */
+  case Distance
+  /** A pin (revolute joint) at the middle of the two centres, about which both turn freely. */
+  case Revolute
+
+/** A joint between the layout's bodies `body1` and `body2` (indices into [[Layout.bodies]]):
+  * by default a rigid distance joint holding their centres at their initial distance; the two
+  * never collide.
   */
-final case class SceneJoint(body1: Int, body2: Int)
+final case class SceneJoint(body1: Int, body2: Int, kind: JointKind = JointKind.Distance)
 
 /** A scene described as plain values, which any engine can build: SiMS here ([[world]]),
   * jBox2D and dyn4j in the bench, each by translating the same values. Mirrors the scene
@@ -72,6 +85,9 @@ final case class Layout(bodies: IndexedSeq[SceneBody], joints: IndexedSeq[SceneJ
 
   /** Indices of the free (not fixed) bodies, in order. */
   def freeBodies: IndexedSeq[Int] = bodies.indices.filterNot(bodies(_).fixed)
+
+  /** A revolute joint's pin: the middle of its bodies' initial centres. */
+  def pin(joint: SceneJoint): Vector2D = (bodies(joint.body1).centre + bodies(joint.body2).centre) / 2
 
   /** Rest length of a joint: the initial distance of its bodies' centres, m. */
   def length(joint: SceneJoint): Double =
@@ -95,11 +111,14 @@ final case class Layout(bodies: IndexedSeq[SceneBody], joints: IndexedSeq[SceneJ
     for (spec, shape) <- bodies.zip(shapes) do
       val body = shape.asBody
       if spec.fixed then body.fixed = true
+      else if spec.velocity != Vector2D.Null then body.linearVelocity = spec.velocity
       world += body
     val created = world.bodies.toIndexedSeq
     for j <- joints do
       val (a, b) = (created(j.body1), created(j.body2))
-      world += DistanceJoint(a, a.pos, b, b.pos)
+      j.kind match
+        case JointKind.Distance => world += DistanceJoint(a, a.pos, b, b.pos)
+        case JointKind.Revolute => world += RevoluteJoint(a, b, pin(j))
     world
 
   private def shape(spec: SceneBody): Shape =

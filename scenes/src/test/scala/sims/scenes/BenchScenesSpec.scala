@@ -10,7 +10,7 @@ class BenchScenesSpec extends AnyFunSuite with Matchers:
 
   test("the standard scenes keep the bench's names and order") {
     BenchScenes.names shouldBe Seq("ballpit-500", "ballpit-1000", "ballpit-2000", "ballpit-4000", "ballpit-8000",
-      "ballpit-16000", "pyramid-20", "chain-100", "ballstack")
+      "ballpit-16000", "pyramid-20", "chain-100", "ballstack", "large_pyramid", "many_pyramids", "joint_grid", "smash")
   }
 
   test("families are found by name for any size, ignoring case, and nothing else is") {
@@ -114,3 +114,71 @@ class BenchScenesSpec extends AnyFunSuite with Matchers:
     for case scene: LayoutScene <- BenchScenes.standard.filterNot(_.name == "ballpit-16000") do
       scene.build().world.bodies.size shouldBe scene.layout.bodies.size
   }
+
+  test("Box2D's benchmark scenes and their smaller sizes are found by name") {
+    BenchScenes.find("large_pyramid") shouldBe Some(LargePyramid(100))
+    BenchScenes.find("Large_Pyramid-20") shouldBe Some(LargePyramid(20))
+    BenchScenes.find("many_pyramids") shouldBe Some(ManyPyramids(20, 20))
+    BenchScenes.find("many_pyramids-2x3") shouldBe Some(ManyPyramids(2, 3))
+    BenchScenes.find("joint_grid") shouldBe Some(JointGrid(100))
+    BenchScenes.find("joint_grid-10") shouldBe Some(JointGrid(10))
+    BenchScenes.find("smash") shouldBe Some(Smash(120, 80))
+    BenchScenes.find("smash-4x3") shouldBe Some(Smash(4, 3))
+    for name <- Seq("large_pyramid-0", "joint_grid-6", "many_pyramids-0x3", "smash-3", "smash-3x0", "large_pyramid-") do
+      withClue(name)(BenchScenes.find(name) shouldBe None)
+  }
+
+  test("large_pyramid: a 200 m ground box and 5,050 boxes of 1 m, side by side, each row centred on the one below") {
+    val layout = LargePyramid().layout
+    layout.bodies.size shouldBe 1 + 5050
+    layout.bodies.head shouldBe SceneBody.box(sims.geometry.Vector2D(0, -1), 100, 1, fixed = true)
+    val bottom = layout.bodies.slice(1, 101)
+    bottom.map(_.centre.y).distinct shouldBe Seq(0.5)
+    bottom.map(_.centre.x) shouldBe (0 until 100).map(j => -49.5 + j)
+    val top = layout.bodies.last
+    (top.centre.x, top.centre.y) shouldBe (0.0, 99.5)
+    layout.bodies.tail.map(_.outline).distinct shouldBe Seq(Outline.Box(0.5, 0.5))
+  }
+
+  test("many_pyramids: 20 floors 11 m apart, each with 20 pyramids of 55 boxes standing on it") {
+    val scene = ManyPyramids()
+    val layout = scene.layout
+    layout.bodies.count(_.fixed) shouldBe 20
+    layout.freeBodies.size shouldBe 22000
+    val floorTops = layout.bodies.filter(_.fixed).map(b => b.outline match
+      case Outline.Box(_, halfHeight) => b.centre.y + halfHeight
+      case other => fail(s"a floor is $other"))
+    floorTops.zipWithIndex.foreach((top, i) => top shouldBe (11.0 * i) +- 1e-12)
+    scene.groundWidth shouldBe 220.0
+    // The first pyramid's bottom row: x from -110 + 1 - 0.5 + 0.5, one box apart, resting on floor 0.
+    val first = layout.bodies.slice(20, 30)
+    first.map(_.centre) shouldBe (0 until 10).map(j => sims.geometry.Vector2D(-109.0 + j, 0.5))
+    layout.freeBodies.map(i => layout.bodies(i).centre.x).max should be < 110.0
+  }
+
+  test("joint_grid: 100 x 100 discs that never collide, 19,800 pins, the top row's 7 middle discs fixed") {
+    val grid = JointGrid()
+    val layout = grid.layout
+    layout.bodies.size shouldBe 10000
+    layout.joints.size shouldBe 2 * 100 * 99
+    layout.joints.map(_.kind).distinct shouldBe Seq(JointKind.Revolute)
+    layout.bodies.indices.filter(layout.bodies(_).fixed) shouldBe (47 to 53).map(grid.index(_, 0))
+    layout.bodies(grid.index(3, 7)).centre shouldBe sims.geometry.Vector2D(3, -7)
+    layout.bodies.map(_.noCollideGroup).distinct shouldBe Seq(1)
+    for j <- layout.joints do layout.length(j) shouldBe 1.0
+    layout.world().bodies.flatMap(_.shapes).map(_.collidable).distinct shouldBe Seq(false)
+  }
+
+  test("smash: no gravity, an 8 m box at 40 m/s and a wall of 9,600 boxes of 0.4 m at rest") {
+    val layout = Smash().layout
+    layout.gravity shouldBe sims.geometry.Vector2D.Null
+    layout.bodies.size shouldBe 1 + 9600
+    layout.bodies.head.velocity shouldBe sims.geometry.Vector2D(40, 0)
+    layout.bodies.head.density shouldBe 8.0
+    layout.bodies.head.outline shouldBe Outline.Box(4, 4)
+    layout.bodies.tail.map(_.velocity).distinct shouldBe Seq(sims.geometry.Vector2D.Null)
+    layout.bodies(1).centre shouldBe sims.geometry.Vector2D(30, -16)
+    layout.bodies.tail.map(_.centre.x).max shouldBe (30 + 119 * 0.4) +- 1e-9
+    layout.freeBodies.size shouldBe 9601
+  }
+

@@ -60,3 +60,21 @@ class LayoutSpec extends AnyFunSuite with Matchers:
     an[IllegalArgumentException] should be thrownBy SceneBody(Outline.Circle(1), Vector2D.Null, false, 0, 0.5, 0)
     an[IllegalArgumentException] should be thrownBy SceneBody(Outline.Circle(1), Vector2D.Null, true, 0, 0.5, 0, -1)
   }
+
+  test("a revolute joint pins the two bodies at the middle of their centres; a body starts at its velocity") {
+    val pinned = layout.copy(
+      bodies = layout.bodies.updated(3, layout.bodies(3).copy(velocity = Vector2D(40, -1))),
+      joints = IndexedSeq(SceneJoint(1, 2, JointKind.Revolute), SceneJoint(2, 3)))
+    pinned.pin(pinned.joints.head) shouldBe Vector2D(0, 1)
+    val world = pinned.world()
+    world.joints.map(_.getClass.getSimpleName) shouldBe Seq("RevoluteJoint", "DistanceJoint")
+    world.joints.head match
+      case pin: sims.dynamics.joints.RevoluteJoint =>
+        pin.connection1 shouldBe Vector2D(0, 1)
+        pin.connection2 shouldBe Vector2D(0, 1)
+      case other => fail(s"the pin became $other")
+    world.bodies(3).linearVelocity shouldBe Vector2D(40, -1)
+    world.bodies(1).linearVelocity shouldBe Vector2D.Null
+    an[IllegalArgumentException] should be thrownBy layout.bodies(0).copy(velocity = Vector2D(1, 0))
+  }
+

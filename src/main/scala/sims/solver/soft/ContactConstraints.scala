@@ -30,7 +30,7 @@ private[sims] object ContactConstraints:
     val cold = contacts.cold
     val state = bodies.state
     var c = 0
-    while c < contacts.count do
+    while c < contacts.active do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
@@ -64,7 +64,7 @@ private[sims] object ContactConstraints:
   def warmStart(contacts: Contacts, bodies: SoftBodies): Unit =
     val hot = contacts.hot
     var c = 0
-    while c < contacts.count do
+    while c < contacts.active do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val k = contacts.offset(c)
@@ -89,7 +89,7 @@ private[sims] object ContactConstraints:
     val hot = contacts.hot
     val state = bodies.state
     var c = 0
-    while c < contacts.count do
+    while c < contacts.active do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
@@ -174,7 +174,7 @@ private[sims] object ContactConstraints:
   def addFreeMotion(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, h: Double): Unit =
     val hot = contacts.hot
     var c = 0
-    while c < contacts.count do
+    while c < contacts.active do
       val k = contacts.offset(c)
       if hot(k + Restitution) != 0 then
         val a = contacts.bodyA(c)
@@ -222,7 +222,7 @@ private[sims] object ContactConstraints:
     while pass < iterations && largest > tolerance do
       largest = 0.0
       var c = 0
-      while c < contacts.count do
+      while c < contacts.active do
         val k = contacts.offset(c)
         val e = hot(k + Restitution)
         if e != 0 then

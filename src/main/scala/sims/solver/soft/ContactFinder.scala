@@ -36,6 +36,7 @@ import sims.solver.soft.SoftBodies.*
 private[sims] final class ContactFinder:
   private val manifold = Manifold()
   private var bodies: SoftBodies = null
+  private var world: World = null
   private var timeStep = 0.0
 
   /** Fills `table.current` with this step's contacts of `world`, whose bodies `bodies` holds,
@@ -44,8 +45,10 @@ private[sims] final class ContactFinder:
   def find(world: World, table: ContactTable, bodies: SoftBodies, gridSide: Double, maxPairs: Int,
       speculativeDistance: Double, linearSlop: Double, persistence: Double): Unit =
     this.bodies = bodies
+    this.world = world
     timeStep = world.timeStep
     table.begin()
+    if bodies.anyAsleep then wakeOnMovedFixed(table.committed)
     world.detector match
       case detector: GridDetector =>
         val stages = world.collisionPipeline
@@ -54,39 +57,147 @@ private[sims] final class ContactFinder:
         val pairs = stages.pairs
         val narrowphase = stages.narrowphase
         narrowphase.update(detector.detectionMethods, detector.collisionMethods)
-        var i = 0
-        while i < pairs.size do
-          val a = pairs.first(i)
-          val b = pairs.second(i)
-          val methods = narrowphase.resolve(a, b)
-          val key = PairKey.of(a, b)
-          val last = table.lastOf(key)
-          // For every pair, kept or not: it also refuses speeds too large to compute with.
-          val approach = approachBound(a.body.index, b.body.index)
-          val functions = methods.functions
-          if functions == null then
-            val collision = narrowphase.collideGeneral(methods, a, b)
-            if collision != null then addCollision(table, collision, key, last)
-          else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
-              keeps(table.committed, last, a, b, persistence) then
-            keep(table, last, a, b, key)
-          else
-            functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
-              speculativeDistance + timeStep * approach, linearSlop, manifold)
-            if manifold.pointCount > 0 then
-              addManifold(table, a, b, key, last)
-              if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
-                aimAtImpact(table.current, table.current.count - 1, a.asInstanceOf[Circle], b.asInstanceOf[Circle])
-          i += 1
+        if !bodies.anyAsleep then
+          var i = 0
+          while i < pairs.size do
+            collide(table, pairs.first(i), pairs.second(i), speculativeDistance, linearSlop, persistence)
+            i += 1
+        else
+          // Sleeping islands touched by an awake body (or by a fixed body the user moved) wake
+          // first, and the islands they touch in turn; then the pairs with a moving body are
+          // collided, and the contacts of pairs still asleep are carried over unchanged, after
+          // them (the passes solve only the first `active`).
+          var woke = true
+          while woke do
+            woke = false
+            var i = 0
+            while i < pairs.size do
+              val a = pairs.first(i)
+              val b = pairs.second(i)
+              val ia = a.body.index
+              val ib = b.body.index
+              val sleeper = if bodies.asleep(ia) && wakes(ib) then ia else if bodies.asleep(ib) && wakes(ia) then ib else -1
+              if sleeper >= 0 && touches(a, b, speculativeDistance, linearSlop) then
+                bodies.wakeIsland(bodies.bodies(sleeper).sleepIsland)
+                woke = true
+              i += 1
+          var i = 0
+          while i < pairs.size do
+            val a = pairs.first(i)
+            val b = pairs.second(i)
+            if bodies.invMass(a.body.index) != 0 || bodies.invMass(b.body.index) != 0 then
+              collide(table, a, b, speculativeDistance, linearSlop, persistence)
+            i += 1
+          table.current.active = table.current.count
+          i = 0
+          while i < pairs.size do
+            val a = pairs.first(i)
+            val b = pairs.second(i)
+            if bodies.invMass(a.body.index) == 0 && bodies.invMass(b.body.index) == 0 then
+              val key = PairKey.of(a, b)
+              val last = table.lastOf(key)
+              if last >= 0 then carry(table, last, a, b, key)
+              // A pair asleep with no contact kept (the last step did not look for contacts, or
+              // the user put the bodies to sleep): its manifold now, to warm-start from 0.
+              else collide(table, a, b, speculativeDistance, linearSlop, persistence)
+            i += 1
       case detector =>
         detector.detect()
         val collisions = detector.collisions
+        // A detector of the user's finds every colliding pair: a sleeper colliding with a body
+        // that wakes it wakes, and the islands it touches in turn.
+        var woke = bodies.anyAsleep
+        while woke do
+          woke = false
+          var i = 0
+          while i < collisions.length do
+            val ia = collisions(i).shape1.body.index
+            val ib = collisions(i).shape2.body.index
+            val sleeper = if bodies.asleep(ia) && wakes(ib) then ia else if bodies.asleep(ib) && wakes(ia) then ib else -1
+            if sleeper >= 0 then
+              bodies.wakeIsland(bodies.bodies(sleeper).sleepIsland)
+              woke = true
+            i += 1
         var i = 0
         while i < collisions.length do
           val c = collisions(i)
           val key = PairKey.of(c.shape1, c.shape2)
           addCollision(table, c, key, table.lastOf(key))
           i += 1
+    if !bodies.anyAsleep || !world.detector.isInstanceOf[GridDetector] then table.current.active = table.current.count
+
+  /** Collides the pair (a, b): its manifold (or the last step's, kept), as a contact of this step. */
+  private def collide(table: ContactTable, a: Shape, b: Shape, speculativeDistance: Double, linearSlop: Double,
+      persistence: Double): Unit =
+    val stages = world.collisionPipeline
+    val narrowphase = stages.narrowphase
+    val methods = narrowphase.resolve(a, b)
+    val key = PairKey.of(a, b)
+    val last = table.lastOf(key)
+    // For every pair, kept or not: it also refuses speeds too large to compute with.
+    val approach = approachBound(a.body.index, b.body.index)
+    val functions = methods.functions
+    if functions == null then
+      val collision = narrowphase.collideGeneral(methods, a, b)
+      if collision != null then addCollision(table, collision, key, last)
+    else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
+        keeps(table.committed, last, a, b, persistence) then
+      keep(table, last, a, b, key)
+    else
+      functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
+        speculativeDistance + timeStep * approach, linearSlop, manifold)
+      if manifold.pointCount > 0 then
+        addManifold(table, a, b, key, last)
+        if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
+          aimAtImpact(table.current, table.current.count - 1, a.asInstanceOf[Circle], b.asInstanceOf[Circle])
+
+  /** Wakes the sleeping islands that touched, at the last step, a fixed body the user placed
+    * since: it may have moved away from them (they would hang in the air) or into them.
+    */
+  private def wakeOnMovedFixed(committed: Contacts): Unit =
+    var c = 0
+    while c < committed.count do
+      val a = committed.shapeA(c).body.index
+      val b = committed.shapeB(c).body.index
+      if a >= 0 && b >= 0 then
+        if bodies.asleep(a) && !bodies.asleep(b) && bodies.bodies(b).movedByUser then
+          bodies.wakeIsland(bodies.bodies(a).sleepIsland)
+        else if bodies.asleep(b) && !bodies.asleep(a) && bodies.bodies(a).movedByUser then
+          bodies.wakeIsland(bodies.bodies(b).sleepIsland)
+      c += 1
+
+  /** Whether body i wakes a sleeping body it touches: it moves (awake and not fixed), or it is a
+    * fixed body the user placed since the last step.
+    */
+  private def wakes(i: Int): Boolean =
+    if bodies.invMass(i) != 0 then true
+    else !bodies.asleep(i) && bodies.bodies(i).movedByUser
+
+  /** Whether shapes a and b touch as the soft step counts it: their manifold has a point. */
+  private def touches(a: Shape, b: Shape, speculativeDistance: Double, linearSlop: Double): Boolean =
+    val narrowphase = world.collisionPipeline.narrowphase
+    val methods = narrowphase.resolve(a, b)
+    val approach = approachBound(a.body.index, b.body.index)
+    val functions = methods.functions
+    if functions == null then narrowphase.collideGeneral(methods, a, b) != null
+    else
+      functions.manifold(a, b, -1, speculativeDistance + timeStep * approach, linearSlop, manifold)
+      manifold.pointCount > 0
+
+  /** Appends the last step's contact `last` of a pair asleep as it is (its bodies' indices as
+    * they are now): its impulses warm start the pair when its island wakes.
+    */
+  private def carry(table: ContactTable, last: Int, a: Shape, b: Shape, key: Long): Unit =
+    val old = table.committed
+    val contacts = table.current
+    val points = old.pointCount(last)
+    val k = old.offset(last)
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points)
+    contacts.side(c) = old.side(last)
+    System.arraycopy(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
+    System.arraycopy(old.cold, last * ColdStride, contacts.cold, c * ColdStride, ColdStride)
+    contacts.ids(2 * c) = old.ids(2 * last)
+    contacts.ids(2 * c + 1) = old.ids(2 * last + 1)
 
   /** An upper bound of how fast two bodies' points can approach each other at the start of
     * the step: |vA - vB| + |wA| extentA + |wB| extentB. Over the step they close at most this

@@ -118,6 +118,10 @@ private[sims] final class Contacts:
 
   /** Number of contacts. */
   var count: Int = 0
+  /** The contacts the solver's passes take: the first `active` (the rest are carried over
+    * unchanged from the last step: pairs asleep).
+    */
+  var active: Int = 0
   var shapeA, shapeB: Array[Shape] = new Array[Shape](16)
   var bodyA, bodyB: Array[Int] = new Array[Int](16)
   var keys: Array[Long] = new Array[Long](16)
@@ -144,6 +148,7 @@ private[sims] final class Contacts:
   /** Forgets every contact. */
   def clear(): Unit =
     count = 0
+    active = 0
     hotSize = 0
 
   /** Where point p of contact c starts in `hot`. */
@@ -157,6 +162,7 @@ private[sims] final class Contacts:
     val c = Contacts()
     c.grow(math.max(count, 16))
     c.count = count
+    c.active = active
     c.hotSize = hotSize
     c.hot = java.util.Arrays.copyOf(hot, math.max(hotSize, 16))
     System.arraycopy(shapeA, 0, c.shapeA, 0, count); System.arraycopy(shapeB, 0, c.shapeB, 0, count)

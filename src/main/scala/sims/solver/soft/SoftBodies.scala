@@ -30,11 +30,16 @@ private[sims] final class SoftBodies:
   var forceX, forceY, torque: Array[Double] = new Array[Double](0)
   /** Per body: the force and torque of the current substep (the user's plus the force joints'). */
   var substepForceX, substepForceY, substepTorque: Array[Double] = new Array[Double](0)
+  /** Per body: asleep (not moved by this step: its inverse masses are 0 here, as a fixed body's). */
+  var asleep: Array[Boolean] = new Array[Boolean](0)
+  /** Whether any body is asleep. */
+  var anyAsleep: Boolean = false
 
   /** Takes the state of the world's bodies at the start of a step. */
   def load(list: ArrayBuffer[Body]): Unit =
     count = list.length
     if bodies.length < count then grow(math.max(count, 2 * bodies.length))
+    anyAsleep = false
     var i = 0
     while i < count do
       val b = list(i)
@@ -43,11 +48,26 @@ private[sims] final class SoftBodies:
       state(k + VelocityX) = b.vx; state(k + VelocityY) = b.vy; state(k + AngularVelocity) = b.w
       state(k + ShiftX) = 0; state(k + ShiftY) = 0; state(k + Turn) = 0
       state(k + TurnCos) = 1; state(k + TurnSin) = 0
-      invMass(i) = b.invMass
-      invI(i) = b.invI
+      val sleeping = !b.isAwake
+      asleep(i) = sleeping
+      if sleeping then anyAsleep = true
+      invMass(i) = if sleeping then 0 else b.invMass
+      invI(i) = if sleeping then 0 else b.invI
       startX(i) = b.x; startY(i) = b.y; startAngle(i) = b.angle
       forceX(i) = b.fx; forceY(i) = b.fy; torque(i) = b.tau
       substepForceX(i) = b.fx; substepForceY(i) = b.fy; substepTorque(i) = b.tau
+      i += 1
+
+  /** Wakes every body asleep in `island`: it takes part in the step from now on. */
+  def wakeIsland(island: Long): Unit =
+    var i = 0
+    while i < count do
+      val b = bodies(i)
+      if asleep(i) && b.sleepIsland == island then
+        b.wakeAlone()
+        asleep(i) = false
+        invMass(i) = b.invMass
+        invI(i) = b.invI
       i += 1
 
   /** Current x of body i's centre. */
@@ -118,6 +138,7 @@ private[sims] final class SoftBodies:
     torque = new Array[Double](capacity)
     substepForceX = new Array[Double](capacity); substepForceY = new Array[Double](capacity)
     substepTorque = new Array[Double](capacity)
+    asleep = new Array[Boolean](capacity)
 
 /** The layout of `SoftBodies.state`: body i's values start at `i * Stride`, at these offsets.
   * This is the one place that names them; every reader and writer uses the names.

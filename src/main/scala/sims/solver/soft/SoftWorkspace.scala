@@ -20,6 +20,12 @@ private[sims] final class SoftWorkspace extends sims.dynamics.CarriedState:
   val stiffness: ContactStiffness = ContactStiffness()
   /** The joints: their constraints, this step's force joints and joint trees. */
   val joints: SoftJoints = SoftJoints()
+  /** Sleeping: resting times and islands. */
+  val islands: SleepIslands = SleepIslands()
+  /** The world's `revision` at the end of the last step that collided its pairs, or -1: a step
+    * in which every body sleeps may skip its collision stage only while it is unchanged.
+    */
+  var collidedRevision: Long = -1
 
   // The committed contacts when the step under way began: a failed step that already
   // committed its contacts swaps the generations back.

@@ -44,14 +44,22 @@ private[sims] final class SoftJoints:
     var i = 0
     while i < knownCount do
       val c = knownConstraints(i)
-      if c != null then constraints += c
+      val j = known(i)
+      // A joint whose bodies are both asleep (or asleep and fixed) rests with them, its impulses kept.
+      if bodies.anyAsleep && restsAsleep(bodies, j.node1.index, j.node2.index) then ()
+      else if c != null then constraints += c
       else
-        val j = known(i)
         forceJoints += j.asInstanceOf[ForceJoint]
         markForceBody(j.node1.index)
         markForceBody(j.node2.index)
       i += 1
     if direct then trees.build(constraints, bodies) else trees.keepIterative(constraints)
+
+  /** Whether a joint between bodies a and b rests: neither moves this step (each asleep or
+    * fixed) and one of them sleeps. A body outside the world (index -1) never rests.
+    */
+  private def restsAsleep(bodies: SoftBodies, a: Int, b: Int): Boolean =
+    a >= 0 && b >= 0 && bodies.invMass(a) == 0 && bodies.invMass(b) == 0 && (bodies.asleep(a) || bodies.asleep(b))
 
   private def sameJoints(joints: ArrayBuffer[Joint]): Boolean =
     if joints.length != knownCount then false
