@@ -67,6 +67,15 @@ abstract class Shape:
     Shape.requireNonNegative("friction", value)
     _friction = value
 
+  /** Whether this shape's contacts are reported as contact events (default true); off, its
+    * pairs make no `World.contactEvents` (a touching pair ends at the next step). Its contacts
+    * are solved all the same.
+    */
+  var enableContactEvents: Boolean = true
+
+  /** Anything of the user's that belongs with this shape (default None): never read by the library. */
+  var userData: Option[Any] = None
+
   /** Whether this shape takes part in collisions at all. */
   var collidable: Boolean = true
 

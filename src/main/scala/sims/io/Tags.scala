@@ -15,3 +15,6 @@ private[io] object Tags:
   val RevoluteJointTag = 2
   val PrismaticJointTag = 3
   val MouseJointTag = 4
+  val WeldJointTag = 5
+  val WheelJointTag = 6
+  val MotorJointTag = 7

@@ -96,7 +96,7 @@ final case class SoftStep(
     world.stage = "advanceTime"
     advanceTime(world)
     world.stage = "loadBodies"
-    loadBodies(world, workspace)
+    loadBodies(world, workspace, h)
     world.stage = "findContacts"
     findContacts(world, workspace)
     world.stage = "prepare"
@@ -128,6 +128,10 @@ final case class SoftStep(
       bulletsOf(world).sweep(world)
       world.guard("continuous collision", Checked.Positions)
 
+  /** Every parameter by name, e.g. `SoftStep(substeps = 4, contactHertz = 30.0, ...)`. */
+  override def toString: String =
+    productElementNames.zip(productIterator).map((name, value) => s"$name = $value").mkString("SoftStep(", ", ", ")")
+
   /** The soft step reports the contacts that touch itself (see [[sims.solver.soft.ContactTouching]]). */
   override private[sims] def reportsTouching: Boolean = true
 
@@ -145,8 +149,8 @@ final case class SoftStep(
 
   private def advanceTime(world: World): Unit = world.advanceTime()
 
-  private def loadBodies(world: World, workspace: SoftWorkspace): Unit =
-    workspace.bodies.load(world.bodyList)
+  private def loadBodies(world: World, workspace: SoftWorkspace, h: Double): Unit =
+    workspace.bodies.load(world.bodyList, h)
     workspace.joints.sort(world, workspace.bodies, directJoints)
 
   private def findContacts(world: World, workspace: SoftWorkspace): Unit =
@@ -184,9 +188,15 @@ final case class SoftStep(
       val m = bodies.invMass(i)
       if m != 0 then
         val k = i * SoftBodies.Stride
-        state(k + VelocityX) += h * (gx + bodies.substepForceX(i) * m)
-        state(k + VelocityY) += h * (gy + bodies.substepForceY(i) * m)
+        // Times the gravity scale, 1 unless the user set it: exact, the sums unchanged.
+        val scale = bodies.gravityScale(i)
+        state(k + VelocityX) += h * (gx * scale + bodies.substepForceX(i) * m)
+        state(k + VelocityY) += h * (gy * scale + bodies.substepForceY(i) * m)
         state(k + AngularVelocity) += h * bodies.substepTorque(i) * bodies.invI(i)
+        if bodies.anyDamped then
+          state(k + VelocityX) *= bodies.linearDecay(i)
+          state(k + VelocityY) *= bodies.linearDecay(i)
+          state(k + AngularVelocity) *= bodies.angularDecay(i)
       i += 1
     ContactConstraints.addFreeMotion(workspace.table.current, bodies, gx, gy, h)
 
@@ -269,9 +279,15 @@ final case class SoftStep(
 
   private def finish(world: World, workspace: SoftWorkspace): Unit =
     workspace.bodies.finish()
+    val joints = workspace.joints.constraints
+    var i = 0
+    while i < joints.length do
+      joints(i).report(workspace.context.inverseH)
+      i += 1
     world.guard("soft step substeps", Checked.Velocities)
     world.guard("soft step substeps", Checked.Positions)
-    ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker)
+    if world.enableContactEvents then
+      ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker)
     workspace.table.commit()
 
 /** Checks of [[SoftStep]]'s parameters. */

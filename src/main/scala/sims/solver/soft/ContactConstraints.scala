@@ -181,11 +181,12 @@ private[sims] object ContactConstraints:
         val b = contacts.bodyB(c)
         val mA = bodies.invMass(a); val mB = bodies.invMass(b)
         // The substep's change of each body's velocities by gravity and forces.
-        val dvAx = if mA == 0 then 0.0 else h * (gx + bodies.substepForceX(a) * mA)
-        val dvAy = if mA == 0 then 0.0 else h * (gy + bodies.substepForceY(a) * mA)
+        val sA = bodies.gravityScale(a); val sB = bodies.gravityScale(b)
+        val dvAx = if mA == 0 then 0.0 else h * (gx * sA + bodies.substepForceX(a) * mA)
+        val dvAy = if mA == 0 then 0.0 else h * (gy * sA + bodies.substepForceY(a) * mA)
         val dwA = h * bodies.substepTorque(a) * bodies.invI(a)
-        val dvBx = if mB == 0 then 0.0 else h * (gx + bodies.substepForceX(b) * mB)
-        val dvBy = if mB == 0 then 0.0 else h * (gy + bodies.substepForceY(b) * mB)
+        val dvBx = if mB == 0 then 0.0 else h * (gx * sB + bodies.substepForceX(b) * mB)
+        val dvBy = if mB == 0 then 0.0 else h * (gy * sB + bodies.substepForceY(b) * mB)
         val dwB = h * bodies.substepTorque(b) * bodies.invI(b)
         val nx = hot(k + NormalX); val ny = hot(k + NormalY)
         var p = 0

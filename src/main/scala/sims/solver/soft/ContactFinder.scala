@@ -168,8 +168,8 @@ private[sims] final class ContactFinder:
       val s = ContactFinder.sine(turnA)
       val relativeX = c * dx + s * dy - old.cold(k + CachedRelativeX)
       val relativeY = -s * dx + c * dy - old.cold(k + CachedRelativeY)
-      val extentA = if bodies.invMass(a) == 0 then 0.0 else bodies.bodies(a).extent
-      val extentB = if bodies.invMass(b) == 0 then 0.0 else bodies.bodies(b).extent
+      val extentA = if bodies.bodies(a).fixed then 0.0 else bodies.bodies(a).extent
+      val extentB = if bodies.bodies(b).fixed then 0.0 else bodies.bodies(b).extent
       val shift = math.sqrt(relativeX * relativeX + relativeY * relativeY)
       shift + math.max(extentA, extentB) * math.abs(ContactFinder.sine(turnB - turnA)) < persistence
 
