@@ -33,7 +33,7 @@ private[io] object WorldReader:
       val shapes = world.shapes
       for s <- shapes do s.transientShapes = Seq.fill(in.readInt())(shapes(in.readInt())).toSet
       for _ <- 0 until in.readInt() do world += joint(in, world, bodies, version)
-      if in.readBoolean() then contacts(in, world)
+      if in.readBoolean() then contacts(in, world, version)
       if version >= 3 then world.restoreEvents(openPairs(in, shapes), openPairs(in, shapes))
       if in.available() != 0 then throw IllegalArgumentException(s"${in.available()} bytes after the saved world")
       world
@@ -250,7 +250,7 @@ private[io] object WorldReader:
     PairTracker.Saved(Array.tabulate(count)(i => PairKey.of(first(i), second(i))), first, second)
 
   /** The soft step's committed contacts, keyed by the loaded shapes. */
-  private def contacts(in: DataInputStream, world: World): Unit =
+  private def contacts(in: DataInputStream, world: World, version: Int): Unit =
     val shapes = world.shapes
     val table = Contacts()
     for _ <- 0 until in.readInt() do
@@ -265,6 +265,10 @@ private[io] object WorldReader:
       table.ids(2 * c + 1) = in.readInt()
       table.side(c) = in.readInt()
       val hot = table.offset(c)
-      for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do table.hot(hot + k) = in.readDouble()
+      for k <- 0 until ContactTable.Header do table.hot(hot + k) = in.readDouble()
+      // Before version 5 a point's block had no ImpactGap (its last slot): it stays 0.
+      val saved = if version >= 5 then ContactTable.HotPoint else ContactTable.HotPointBeforeFormat5
+      for p <- 0 until table.pointCount(c); k <- 0 until saved do
+        table.hot(hot + ContactTable.Header + p * ContactTable.HotPoint + k) = in.readDouble()
       for k <- 0 until ContactTable.ColdStride do table.cold(c * ContactTable.ColdStride + k) = in.readDouble()
     world.workspace(classOf[SoftWorkspace], SoftWorkspace()).table.restoreCommitted(table)

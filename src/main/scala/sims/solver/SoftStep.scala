@@ -120,7 +120,7 @@ final case class SoftStep(
       solve(workspace, useBias = false) // relax
       substep += 1
     world.stage = "applyRestitution"
-    applyRestitution(workspace)
+    applyRestitution(world, workspace, h)
     world.stage = "finish"
     finish(world, workspace)
     if bullets then
@@ -273,9 +273,9 @@ final case class SoftStep(
         state(k + TurnSin) = turnedS / length
       i += 1
 
-  private def applyRestitution(workspace: SoftWorkspace): Unit =
+  private def applyRestitution(world: World, workspace: SoftWorkspace, h: Double): Unit =
     ContactConstraints.restitution(workspace.table.current, workspace.bodies, restitutionThreshold,
-      Defaults.RestitutionIterations, Defaults.RestitutionTolerance)
+      Defaults.RestitutionIterations, Defaults.RestitutionTolerance, world.gravity.x, world.gravity.y, h)
 
   private def finish(world: World, workspace: SoftWorkspace): Unit =
     workspace.bodies.finish()
