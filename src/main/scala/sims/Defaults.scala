@@ -7,7 +7,7 @@ import sims.geometry.Vector2D
   * classes take them from here (docs/architecture.md lists them).
   */
 object Defaults:
-  // ---- World (SiMS 1.2)
+  // ---- World
 
   /** Duration of one time step, s. */
   val TimeStep: Double = 1.0 / 60
@@ -19,7 +19,7 @@ object Defaults:
   val Gravity: Vector2D = Vector2D(0, -9.81)
 
   /** Linear (m/s) and angular (rad/s) speeds below this become exactly 0 in the classic step's
-    * phase 5 (SiMS 1.2, docs/world-and-time.md).
+    * phase 5.
     */
   val RestingSpeed: Double = 0.0001
 
@@ -63,7 +63,7 @@ object Defaults:
     */
   val MaxCandidatePairs: Int = 1_000_000
 
-  /** Overlap the classic contact's position correction tolerates, m (SiMS's contact rules, docs/collisions.md). */
+  /** Overlap the classic contact's position correction tolerates, m (as in SiMS 1.2). */
   val ToleratedOverlap: Double = 0.01
 
   // ---- Mouse joint
@@ -103,7 +103,7 @@ object Defaults:
   /** Density of a pylon's nodes, kg/m^2. */
   val PylonDensity: Double = 10
 
-  // ---- SoftStep (see docs/two-solvers.md)
+  // ---- SoftStep
 
   /** Substeps per time step. */
   val Substeps: Int = 4

@@ -31,6 +31,8 @@ class GridDetector(val world: World) extends Detector:
   /** Side of a grid cell in m (default 2). */
   def gridSide: Double = _gridSide
 
+  override def toString: String = s"GridDetector(gridSide = $gridSide, maxPairs = $maxPairs)"
+
   /** Sets the cell side; must be positive and finite. */
   def gridSide_=(side: Double): Unit = _gridSide = Shape.requirePositive("gridSide", side)
 

@@ -1,5 +1,7 @@
 package sims.collision
 
+import sims.geometry.PortableMath
+
 import sims.Defaults
 import sims.dynamics.{Body, Circle, Shape}
 
@@ -67,7 +69,7 @@ private[sims] final class TimeOfImpact:
     * body moves it: its centre's distance, plus its bounding radius unless it is a circle.
     */
   private def reach(body: Body, shape: Shape): Double =
-    val offset = math.hypot(shape.x - body.x, shape.y - body.y)
+    val offset = PortableMath.hypot(shape.x - body.x, shape.y - body.y)
     shape match
       case _: Circle => offset
       case _ => offset + shape.boundingRadius

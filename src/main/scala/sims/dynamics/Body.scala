@@ -1,7 +1,7 @@
 package sims.dynamics
 
 import scala.collection.immutable.ArraySeq
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A rigid body made of one or more shapes (documentation chapter 2).
   *
@@ -72,8 +72,13 @@ final class Body(initialShapes: Shape*):
     val i = jointPartners.indexWhere(_ eq other)
     if i >= 0 then jointPartners = jointPartners.patch(i, Nil, 1)
 
-  // An edge has no mass: it may only be part of a fixed body (see Edge).
-  private val hasEdge = shapes.exists(_.isInstanceOf[Edge])
+  // An edge has no mass: it may only be part of a fixed body (see Edge). Found with an index,
+  // not `exists`: in a Scala.js program without edges, Scala.js 1.20's full optimizer turns
+  // `exists(_.isInstanceOf[Edge])` into a loop that never calls the iterator's `next()`.
+  private val hasEdge =
+    var k = 0
+    while k < shapes.length && !shapes(k).isInstanceOf[Edge] do k += 1
+    k < shapes.length
 
   shapesChanged()
   if hasEdge then fixed = true
@@ -105,8 +110,8 @@ final class Body(initialShapes: Shape*):
     x = centreX
     y = centreY
     extent = 0
-    val c = math.cos(-angle)
-    val sn = math.sin(-angle)
+    val c = PortableMath.cos(-angle)
+    val sn = PortableMath.sin(-angle)
     allCentred = true
     for (s, i) <- shapes.zipWithIndex do
       val dx = s.x - x
@@ -136,8 +141,8 @@ final class Body(initialShapes: Shape*):
         shapeArray(i).place(x, y, angle + relativeAngle(i))
         i += 1
     else
-      val c = math.cos(angle)
-      val s = math.sin(angle)
+      val c = PortableMath.cos(angle)
+      val s = PortableMath.sin(angle)
       var i = 0
       while i < shapeArray.length do
         shapeArray(i).place(x + offsetX(i) * c - offsetY(i) * s, y + offsetX(i) * s + offsetY(i) * c,

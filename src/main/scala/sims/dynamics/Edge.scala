@@ -1,6 +1,6 @@
 package sims.dynamics
 
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A straight edge of no thickness from `start` to `end` (world coordinates, distinct): the
   * outline of something fixed, a ground, a slope or a wall drawn as a line. It is two-sided:
@@ -36,6 +36,6 @@ final class Edge(
   /** 0: an edge has no mass. */
   val I: Double = 0
 
-  place((start.x + end.x) / 2, (start.y + end.y) / 2, math.atan2(end.y - start.y, end.x - start.x))
+  place((start.x + end.x) / 2, (start.y + end.y) / 2, PortableMath.atan2(end.y - start.y, end.x - start.x))
 
   override def toString: String = s"Edge(from $vertex1 to $vertex2)"

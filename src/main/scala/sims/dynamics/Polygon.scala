@@ -1,7 +1,7 @@
 package sims.dynamics
 
 import scala.collection.immutable.ArraySeq
-import sims.geometry.{AABB, ConvexPolygon, PolygonMath, Projection, Vector2D}
+import sims.geometry.{AABB, ConvexPolygon, PolygonMath, PortableMath, Projection, Vector2D}
 
 /** A convex polygonal shape defined by its vertices around its centre at rotation 0
   * (counter-clockwise). World vertices are recomputed lazily after the shape moves, into
@@ -32,8 +32,8 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
   private def refresh(): Unit =
     if !current then
       if angle != trigAngle then // NaN never equals itself: the first call computes
-        cosine = math.cos(angle)
-        sine = math.sin(angle)
+        cosine = PortableMath.cos(angle)
+        sine = PortableMath.sin(angle)
         trigAngle = angle
       val c = cosine
       val s = sine
@@ -66,7 +66,7 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
     ArraySeq.tabulate(count)(i => Vector2D(worldX(i), worldY(i)))
 
   override private[sims] val boundingRadius: Double =
-    (0 until count).map(i => math.hypot(localX(i), localY(i))).max
+    (0 until count).map(i => PortableMath.hypot(localX(i), localY(i))).max
 
   override private[sims] def vertexCount: Int = count
   // The library polygon's own arrays, current: no copy.

@@ -1,6 +1,6 @@
 package sims.dynamics
 
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A regular polygon of `n` (at least 3) vertices on a circle of `radius` (the circumradius,
   * m) and a density (kg/m^2). Vertex i is `(0, radius)` rotated by `2 pi i / n`.
@@ -10,11 +10,11 @@ final class RegularPolygon(val n: Int, val radius: Double, val density: Double =
   Shape.requirePositive("density", density)
 
   /** Area n R^2 sin(2 pi / n) / 2. */
-  val volume: Double = n * radius * radius * math.sin(2 * math.Pi / n) / 2
+  val volume: Double = n * radius * radius * PortableMath.sin(2 * math.Pi / n) / 2
 
   /** m R^2 (1 + 2 cos^2(pi / n)) / 6 (the original's formula was wrong; see the deviations). */
   val I: Double =
-    val c = math.cos(math.Pi / n)
+    val c = PortableMath.cos(math.Pi / n)
     mass * radius * radius * (1 + 2 * c * c) / 6
 
   Shape.checkDerived(this, s"RegularPolygon(n = $n, radius = $radius, density = $density)")

@@ -1,6 +1,6 @@
 package sims.dynamics
 
-import sims.geometry.{AABB, Projection, RayMath, Segment, Vector2D}
+import sims.geometry.{AABB, PortableMath, Projection, RayMath, Segment, Vector2D}
 
 /** A shape made of the points within `radius` of a straight segment, its core: the segment of
   * length 2 `halfLength` through the shape's centre along its rotation (at rotation 0 from
@@ -26,8 +26,8 @@ abstract class RoundedSegment private[sims] () extends Shape:
 
   private def refresh(): Unit =
     if !current then
-      val ux = math.cos(angle)
-      val uy = math.sin(angle)
+      val ux = PortableMath.cos(angle)
+      val uy = PortableMath.sin(angle)
       endXs(0) = x - halfLength * ux; endYs(0) = y - halfLength * uy
       endXs(1) = x + halfLength * ux; endYs(1) = y + halfLength * uy
       // 0.0 - u rather than -u: no negative zeros in printed normals.

@@ -1,7 +1,7 @@
 package sims.dynamics
 
 import sims.collision.RayHit
-import sims.geometry.{AABB, ConvexPolygon, Projection, RayMath, Vector2D}
+import sims.geometry.{AABB, ConvexPolygon, PortableMath, Projection, RayMath, Vector2D}
 
 /** A rigid two-dimensional form with a material (density, restitution, friction). Bodies are
   * made of shapes; a shape belongs to at most one body. Subclasses give the geometry:
@@ -132,7 +132,7 @@ abstract class Shape:
     */
   private[sims] def boundingRadius: Double =
     val box = AABB
-    0.5 * math.hypot(box.maxVertex.x - box.minVertex.x, box.maxVertex.y - box.minVertex.y)
+    0.5 * PortableMath.hypot(box.maxVertex.x - box.minVertex.x, box.maxVertex.y - box.minVertex.y)
 
   /** The interval the shape covers on `axis`. */
   def project(axis: Vector2D): Projection
@@ -218,13 +218,14 @@ abstract class Shape:
 
 /** Checks shared by all shapes. */
 object Shape:
-  // Per shape class: whether it overrides `rayCast` (a user's own cast), found once.
-  private val castsItself = new ClassValue[java.lang.Boolean]:
-    protected def computeValue(shapeClass: Class[?]): java.lang.Boolean =
-      shapeClass.getMethod("rayCast", classOf[Vector2D], classOf[Vector2D]).getDeclaringClass != classOf[Shape]
-
-  /** True if `shape`'s class overrides `rayCast`, which ray casts must then call. */
-  private[sims] def castsItself(shape: Shape): Boolean = castsItself.get(shape.getClass).booleanValue
+  /** True unless `shape` is of one of the library's final shape classes, whose `rayCast` is the
+    * library's own: ray casts then call `rayCast`, which a user's class may override (without
+    * reflection, which Scala.js lacks, an override cannot be seen; calling a `rayCast` that is
+    * not overridden gives the same hit as the library's cast, only with its allocations).
+    */
+  private[sims] def castsItself(shape: Shape): Boolean = shape match
+    case _: Circle | _: Rectangle | _: RegularPolygon | _: HullPolygon | _: Capsule | _: Edge => false
+    case _ => true
 
   /** Fails unless `value` is finite and strictly positive. */
   private[sims] def requirePositive(name: String, value: Double): Double =

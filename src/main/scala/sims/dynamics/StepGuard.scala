@@ -122,13 +122,29 @@ private[sims] object StepGuard:
   def solverName(solver: AnyRef): String = solver.getClass.getSimpleName.stripSuffix("$")
 
   /** A new exception of `error`'s type with `message` and `error` as its cause, if that type is
-    * one of the Java platform's and has a constructor taking a message.
+    * one of the Java platform's common exceptions (by name, not by reflection, which Scala.js
+    * lacks), exactly: a subclass (the user's, or the platform's own) keeps its own type.
     */
   def sameKind(error: Throwable, message: String): Option[Throwable] =
-    if !error.getClass.getName.startsWith("java.") then None
+    val made: Throwable = error match
+      case _: ArrayIndexOutOfBoundsException => ArrayIndexOutOfBoundsException(message)
+      case _: StringIndexOutOfBoundsException => StringIndexOutOfBoundsException(message)
+      case _: IndexOutOfBoundsException => IndexOutOfBoundsException(message)
+      case _: NumberFormatException => NumberFormatException(message)
+      case _: IllegalArgumentException => IllegalArgumentException(message)
+      case _: IllegalStateException => IllegalStateException(message)
+      case _: ArithmeticException => ArithmeticException(message)
+      case _: NullPointerException => NullPointerException(message)
+      case _: ClassCastException => ClassCastException(message)
+      case _: UnsupportedOperationException => UnsupportedOperationException(message)
+      case _: java.util.NoSuchElementException => java.util.NoSuchElementException(message)
+      case _: java.util.ConcurrentModificationException => java.util.ConcurrentModificationException(message)
+      case _: NegativeArraySizeException => NegativeArraySizeException(message)
+      case _: ArrayStoreException => ArrayStoreException(message)
+      case _: RuntimeException => RuntimeException(message)
+      case _: AssertionError => AssertionError(message)
+      case _ => null
+    if made == null || made.getClass != error.getClass then None
     else
-      try
-        val made = error.getClass.getConstructor(classOf[String]).newInstance(message)
-        made.initCause(error)
-        Some(made)
-      catch case _: ReflectiveOperationException | _: IllegalStateException | _: SecurityException => None
+      made.initCause(error)
+      Some(made)

@@ -20,6 +20,8 @@ final class WorldState private ():
   /** Simulated time when the state was taken. */
   def timeOfState: Double = time
 
+  override def toString: String = s"WorldState(time = $time s, ${bodies.length} bodies, ${joints.length} joints)"
+
   /** Saves the state; with `withSolvers`, copies of what the solvers carry too (a step's own
     * save leaves those to `CarriedState.beginStep`, which copies nothing).
     */

@@ -59,8 +59,8 @@ final case class Vector2D(x: Double, y: Double):
 
   /** This vector rotated counter-clockwise by `angle` radians. */
   def rotate(angle: Double): Vector2D =
-    val c = math.cos(angle)
-    val s = math.sin(angle)
+    val c = PortableMath.cos(angle)
+    val s = PortableMath.sin(angle)
     Vector2D(x * c - y * s, x * s + y * c)
 
   /** The left normal `(-y, x)`, this vector rotated by +90 degrees. */

@@ -1,7 +1,7 @@
 package sims.scenes
 
 import sims.dynamics.joints.SpringJoint
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A model atom without gravity: electrons on springs orbit a heavy nucleus. */
 object Atom extends Scene:
@@ -22,9 +22,9 @@ object Atom extends Scene:
     for i <- 0 until Electrons do
       val angle = 2 * math.Pi * i / Electrons
       val radius = OrbitRadius + 0.4 * (i % 2)
-      val electron = Scene.ball(Vector2D(radius * math.cos(angle), radius * math.sin(angle)), 0.15)
+      val electron = Scene.ball(Vector2D(radius * PortableMath.cos(angle), radius * PortableMath.sin(angle)), 0.15)
       // Tangential velocity, alternating in size so the orbits precess and the picture moves.
-      electron.linearVelocity = Vector2D(-math.sin(angle), math.cos(angle)) * (5 + i % 3)
+      electron.linearVelocity = Vector2D(-PortableMath.sin(angle), PortableMath.cos(angle)) * (5 + i % 3)
       world += electron
       world += SpringJoint(nucleus, electron, 8)
     Staged(world)

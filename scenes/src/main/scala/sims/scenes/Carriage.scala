@@ -2,7 +2,7 @@ package sims.scenes
 
 import sims.dynamics.Body
 import sims.dynamics.joints.{DistanceJoint, SpringJoint}
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A car rolling down a slope into a valley: a chassis and two wheels, each wheel hung on a
   * swinging arm (a distance joint) and held up by a damped spring, so it moves up and down
@@ -34,7 +34,7 @@ object Carriage extends Scene:
     def at(x: Double, y: Double): Vector2D = origin + along * x + up * y
     val chassisShape = sims.dynamics.Rectangle(1.0, 0.2, 2)
     chassisShape.pos = at(0, 1.05)
-    chassisShape.rotation = math.atan2(along.y, along.x)
+    chassisShape.rotation = PortableMath.atan2(along.y, along.x)
     val chassis = chassisShape.asBody
     world += chassis
     for side <- Seq(-1, 1) do

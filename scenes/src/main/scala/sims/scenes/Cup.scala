@@ -1,7 +1,7 @@
 package sims.scenes
 
 import sims.dynamics.{Body, Circle, Shape}
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A fixed cup made of one body of circles in a U, and three balls dropped into it. */
 object Cup extends Scene:
@@ -19,7 +19,7 @@ object Cup extends Scene:
     val beads: Seq[Shape] = for i <- 0 to beadCount yield
       val angle = math.Pi + math.Pi * i / beadCount
       val bead = Circle(BeadRadius, 1)
-      bead.pos = Vector2D(CupRadius * math.cos(angle), CupRadius * math.sin(angle))
+      bead.pos = Vector2D(CupRadius * PortableMath.cos(angle), CupRadius * PortableMath.sin(angle))
       bead
     val cup = Body(beads*)
     cup.fixed = true

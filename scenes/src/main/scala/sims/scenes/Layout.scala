@@ -2,7 +2,7 @@ package sims.scenes
 
 import sims.dynamics.{Body, Shape, World}
 import sims.dynamics.joints.DistanceJoint
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** The outline of a layout body's one shape, centred on the body's centre, never rotated. */
 enum Outline:
@@ -77,7 +77,7 @@ final case class Layout(bodies: IndexedSeq[SceneBody], joints: IndexedSeq[SceneJ
   def length(joint: SceneJoint): Double =
     val a = bodies(joint.body1).centre
     val b = bodies(joint.body2).centre
-    math.hypot(b.x - a.x, b.y - a.y)
+    PortableMath.hypot(b.x - a.x, b.y - a.y)
 
   /** A fresh SiMS world of this layout: its bodies in order (index i is `world.bodies(i)`),
     * then its joints.

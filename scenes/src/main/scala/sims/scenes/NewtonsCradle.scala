@@ -1,7 +1,7 @@
 package sims.scenes
 
 import sims.dynamics.joints.DistanceJoint
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** Five steel balls on pendulums, the first lifted and let go (restitution 1). */
 object NewtonsCradle extends Scene:
@@ -23,7 +23,7 @@ object NewtonsCradle extends Scene:
       pivot.shapes.head.collidable = false
       // The first pendulum starts lifted by 60 degrees.
       val angle = if i == 0 then -math.Pi / 3 else 0.0
-      val ball = Scene.ball(Vector2D(pivotX + Length * math.sin(angle), -Length * math.cos(angle)), Radius, density = 8)
+      val ball = Scene.ball(Vector2D(pivotX + Length * PortableMath.sin(angle), -Length * PortableMath.cos(angle)), Radius, density = 8)
       ball.shapes.head.restitution = 1
       world += pivot
       world += ball

@@ -2,7 +2,7 @@ package sims.scenes
 
 import sims.collision.RayHit
 import sims.dynamics.{Capsule, Circle, HullPolygon, Rectangle, RegularPolygon, Shape, World}
-import sims.geometry.{AABB, Segment, Vector2D}
+import sims.geometry.{AABB, PortableMath, Segment, Vector2D}
 
 /** The world's queries at work: a laser turning above a pile is a ray cast, reflected where it
   * hits (up to [[Queries.Bounces]] times) and pushing the first body it hits; a box query
@@ -33,7 +33,7 @@ object Queries extends Scene:
   /** The beam's direction at time `t`. */
   def direction(t: Double): Vector2D =
     val angle = StartAngle + TurnRate * t
-    Vector2D(math.cos(angle), math.sin(angle))
+    Vector2D(PortableMath.cos(angle), PortableMath.sin(angle))
 
   /** The beam at the world's time: its pieces, each with the hit it ends at (None for the last
     * piece when it runs out of length).
@@ -65,7 +65,7 @@ object Queries extends Scene:
 
   /** The box the query sweeps along the floor at time `t`. */
   def zone(t: Double): AABB =
-    val x = 4 * math.sin(0.6 * t)
+    val x = 4 * PortableMath.sin(0.6 * t)
     AABB(Vector2D(x - 1.25, 0), Vector2D(x + 1.25, 1.6))
 
   /** The free shapes whose bounds overlap the zone now. */

@@ -1,7 +1,7 @@
 package sims.scenes
 
 import sims.dynamics.{Body, World}
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** An axis-aligned region of the world, in metres: a camera's view or the space a scene's
   * bodies are expected to stay in.
@@ -77,7 +77,7 @@ object Scene:
   def ramp(from: Vector2D, to: Vector2D, halfThickness: Double = 0.25): Body =
     val along = (to - from).unit
     val centre = (from + to) / 2 - along.leftNormal * halfThickness
-    fixedBox(centre, (to - from).length / 2, halfThickness, math.atan2(along.y, along.x))
+    fixedBox(centre, (to - from).length / 2, halfThickness, PortableMath.atan2(along.y, along.x))
 
   /** A free circle body of the given radius and density centred at `centre`. */
   def ball(centre: Vector2D, radius: Double, density: Double = 1): Body =

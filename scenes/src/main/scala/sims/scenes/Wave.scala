@@ -2,7 +2,7 @@ package sims.scenes
 
 import sims.dynamics.Body
 import sims.dynamics.joints.{PrismaticJoint, SpringJoint}
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A transverse wave: particles that may only slide up and down their vertical rails
   * (prismatic joints), each pulled towards its neighbours by a stretched spring. A pulse
@@ -25,7 +25,7 @@ object Wave extends Scene:
   /** Gives the particles near the left end an upward push. */
   def pluck(particles: Seq[Body]): Unit =
     for (particle, i) <- particles.take(5).zipWithIndex do
-      particle.linearVelocity = particle.linearVelocity + Vector2D(0, 3.0 * math.sin(math.Pi * (i + 1) / 6))
+      particle.linearVelocity = particle.linearVelocity + Vector2D(0, 3.0 * PortableMath.sin(math.Pi * (i + 1) / 6))
 
   def build(): Staged =
     val world = sims.dynamics.World()

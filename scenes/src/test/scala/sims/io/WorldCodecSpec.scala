@@ -238,22 +238,39 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     WorldCodec.save(loaded)(7) shouldBe WorldCodec.FormatVersion
   }
 
-  test("a world saved in format version 2 loads and steps to the same bits as the world it was saved from") {
+  /** The fixture `world-format-<version>.bin`, loaded. */
+  private def fixture(version: Int): World =
+    val stream = getClass.getResourceAsStream(s"/sims/io/world-format-$version.bin")
+    val bytes = try stream.readAllBytes() finally stream.close()
+    bytes(7) shouldBe version // the version's last byte: the file is of the old format
+    WorldCodec.load(bytes)
+
+  /** A loaded fixture `loaded` against `world`, its scene stepped as many times by today's
+    * library: the same bodies in nearly the same places (not to the bit: the soft step's
+    * restitution and the elementary functions changed since the files were written), and the
+    * fixture, loaded twice, steps on to the same bits.
+    */
+  private def closeAndDeterministic(loaded: World, world: World, again: () => World): Unit =
+    loaded.bodies.length shouldBe world.bodies.length
+    for (a, b) <- loaded.bodies.zip(world.bodies) do
+      (a.pos - b.pos).length should be < 1e-3
+      math.abs(a.rotation - b.rotation) should be < 1e-3
+    val twin = again()
+    for _ <- 1 to 30 do
+      loaded.step()
+      twin.step()
+    StateHash(twin) shouldBe StateHash(loaded)
+    WorldCodec.save(twin).sameElements(WorldCodec.save(loaded)) shouldBe true
+
+  test("a world saved in format version 2 loads: its state, no sensors or bullets, and it steps on deterministically") {
     // world-format-2.bin: `shapesScene` under the soft step, stepped 25 times, saved by the
     // library as it was before version 3.
-    val stream = getClass.getResourceAsStream("/sims/io/world-format-2.bin")
-    val bytes = try stream.readAllBytes() finally stream.close()
-    bytes(7) shouldBe 2
-    val loaded = WorldCodec.load(bytes)
+    val loaded = fixture(2)
     val world = shapesScene(SoftStep())
     for _ <- 1 to 25 do world.step()
-    StateHash(loaded) shouldBe StateHash(world)
     loaded.shapes.exists(_.sensor) shouldBe false
     loaded.bodies.exists(_.bullet) shouldBe false
-    for _ <- 1 to 30 do
-      world.step()
-      loaded.step()
-    StateHash(loaded) shouldBe StateHash(world)
+    closeAndDeterministic(loaded, world, () => fixture(2))
   }
 
   /** The world saved in format version 3 as `world-format-3.bin`: a box and a ball resting on the
@@ -284,20 +301,32 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     world += RevoluteJoint(pivot, bob, Vector2D(5, 4))
     world
 
-  test("a world saved in format version 3 loads and steps to the same bits, its joint's impulse and contacts kept") {
-    val stream = getClass.getResourceAsStream("/sims/io/world-format-3.bin")
-    val bytes = try stream.readAllBytes() finally stream.close()
-    bytes(7) shouldBe 3
-    val loaded = WorldCodec.load(bytes)
+  test("a world saved in format version 3 loads: its state, its joint's impulse and contacts, the soft step's settings") {
+    def fixture(): World =
+      val stream = getClass.getResourceAsStream("/sims/io/world-format-3.bin")
+      val bytes = try stream.readAllBytes() finally stream.close()
+      bytes(7) shouldBe 3
+      WorldCodec.load(bytes)
+    val loaded = fixture()
+    // The state it was saved in: the same scene stepped as many times by today's library comes
+    // close, not to the bit (the soft step's restitution and the elementary functions changed
+    // since the file was written).
     val world = formatThreeWorld()
     for _ <- 1 to 25 do world.step()
-    StateHash(loaded) shouldBe StateHash(world)
-    loaded.solver shouldBe SoftStep()
+    for (a, b) <- loaded.bodies.zip(world.bodies) do
+      (a.pos - b.pos).length should be < 1e-4
+      math.abs(a.rotation - b.rotation) should be < 1e-4
+    loaded.solver shouldBe SoftStep() // a version-3 world takes the detector's grid settings: the defaults
+    val soft = loaded.carriedStates.collectFirst { case s: sims.solver.soft.SoftWorkspace => s }.get
+    soft.table.committed.count should be >= 2 // the box's and the ball's contacts with the ground
+    soft.joints.impulsesOf(loaded.joints.head).exists(_ != 0) shouldBe true
+    // It steps on as any world, to the same bits from the same bytes.
+    val again = fixture()
     for _ <- 1 to 30 do
-      world.step()
       loaded.step()
-    StateHash(loaded) shouldBe StateHash(world)
-    WorldCodec.save(loaded) shouldBe WorldCodec.save(world)
+      again.step()
+    StateHash(again) shouldBe StateHash(loaded)
+    WorldCodec.save(again).sameElements(WorldCodec.save(loaded)) shouldBe true
   }
 
   /** The world saved in format version 4 as `world-format-4.bin`: `formatThreeWorld` and a box on
@@ -314,22 +343,16 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     world += PrismaticJoint(pivot, Vector2D(5, 4), slider, Vector2D(-6, 3))
     world
 
-  test("a world saved in format version 4 loads and steps to the same bits, its joints' impulses kept") {
-    val stream = getClass.getResourceAsStream("/sims/io/world-format-4.bin")
-    val bytes = try stream.readAllBytes() finally stream.close()
-    bytes(7) shouldBe 4
-    val loaded = WorldCodec.load(bytes)
+  test("a world saved in format version 4 loads: ids in order, no kinematic bodies, names or limits, its joints' impulses kept") {
+    val loaded = fixture(4)
     val world = formatFourWorld()
     for _ <- 1 to 25 do world.step()
-    StateHash(loaded) shouldBe StateHash(world)
     loaded.bodies.map(_.id) shouldBe (0 until 6)
     loaded.bodies.exists(b => b.kinematic || b.name.nonEmpty) shouldBe false
     loaded.joints.collect { case r: RevoluteJoint => r.limits } shouldBe Seq(None)
-    for _ <- 1 to 30 do
-      world.step()
-      loaded.step()
-    StateHash(loaded) shouldBe StateHash(world)
-    WorldCodec.save(loaded) shouldBe WorldCodec.save(world)
+    val soft = loaded.carriedStates.collectFirst { case s: sims.solver.soft.SoftWorkspace => s }.get
+    all(loaded.joints.map(j => soft.joints.impulsesOf(j).exists(_ != 0))) shouldBe true
+    closeAndDeterministic(loaded, world, () => fixture(4))
   }
 
   test("kinematic bodies, damping, names, contact-event switches and the new joints are saved and step to the same bits") {

@@ -1,7 +1,7 @@
 package sims.dynamics.joints
 
 import sims.dynamics.Body
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** A point fixed on a body, where a joint attaches (SiMS 1.2, docs/constraints.md): its offset from the body's
   * centre and the body's rotation at creation, so that its current arm is that offset rotated
@@ -38,8 +38,8 @@ private[sims] final class AnchorArm(anchor: Anchor):
     // NaN never equals itself, so the first call and a non-finite rotation always recompute.
     if angle != turnedAngle then
       val turn = angle - anchor.rotationAtCreation
-      c = math.cos(turn)
-      s = math.sin(turn)
+      c = PortableMath.cos(turn)
+      s = PortableMath.sin(turn)
       turnedAngle = angle
     armX = anchor.offsetX * c - anchor.offsetY * s
     armY = anchor.offsetX * s + anchor.offsetY * c

@@ -1,7 +1,7 @@
 package sims.dynamics.joints
 
 import sims.dynamics.Body
-import sims.geometry.Vector2D
+import sims.geometry.{PortableMath, Vector2D}
 
 /** Lets body 2 slide along a line fixed on body 1, without turning relative to it.
   *
@@ -101,8 +101,8 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
   private def prepare(): Unit =
     point1.update()
     point2.update()
-    val c = math.cos(node1.angle)
-    val s = math.sin(node1.angle)
+    val c = PortableMath.cos(node1.angle)
+    val s = PortableMath.sin(node1.angle)
     // n = u.leftNormal, u = localAxis turned by body 1's rotation.
     normalX = -(localAxisX * s + localAxisY * c)
     normalY = localAxisX * c - localAxisY * s

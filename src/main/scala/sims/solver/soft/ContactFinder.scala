@@ -5,6 +5,7 @@ import sims.collision.{Collision, GridDetector, PairKey}
 import sims.collision.manifold.Manifold
 import sims.collision.narrowphase.PairKind
 import sims.dynamics.{Shape, World}
+import sims.geometry.PortableMath
 import sims.solver.soft.ContactTable.*
 import sims.solver.soft.SoftBodies.*
 
@@ -310,7 +311,7 @@ private object ContactFinder:
   val UserMatchDistance: Double = 0.01
 
   /** A contact is computed again once either body turned this far since, rad (cos = 0.98). */
-  val KeepAngle: Double = math.acos(0.98)
+  val KeepAngle: Double = PortableMath.acos(0.98)
 
   /** sin(a) for |a| < KeepAngle, to 1e-9, without the library call (Taylor to a^5). */
   inline def sine(a: Double): Double =

@@ -1,5 +1,6 @@
 package sims.solver.soft.joints
 
+import sims.geometry.PortableMath
 import sims.dynamics.joints.MotorJoint
 import sims.solver.soft.SoftContext
 import sims.solver.soft.SoftBodies.*
@@ -54,8 +55,8 @@ private[sims] final class MotorConstraint(motor: MotorJoint) extends JointConstr
     // The point: C = x2 - x1 - R1 offset.
     measureArm(bodies)
     val angle1 = bodies.angle(index1)
-    val c = math.cos(angle1)
-    val s = math.sin(angle1)
+    val c = PortableMath.cos(angle1)
+    val s = PortableMath.sin(angle1)
     val gapX = armX - (c * offsetX - s * offsetY)
     val gapY = armY - (s * offsetX + c * offsetY)
     val w1 = state(s1 + AngularVelocity)

@@ -1,6 +1,7 @@
 package sims.solver.soft.joints
 
 import sims.dynamics.joints.{PrismaticJoint, PrismaticMatrix}
+import sims.geometry.PortableMath
 import sims.solver.soft.{SoftBodies, SoftContext, Softness}
 import sims.solver.soft.SoftBodies.*
 
@@ -34,8 +35,8 @@ private[sims] final class PrismaticConstraint(prismatic: PrismaticJoint) extends
     point2.update()
     // n = u.leftNormal, u = the line's direction turned by body 1's rotation.
     val angle = prismatic.node1.angle
-    val c = math.cos(angle)
-    val s = math.sin(angle)
+    val c = PortableMath.cos(angle)
+    val s = PortableMath.sin(angle)
     startNormalX = -(prismatic.localAxisX * s + prismatic.localAxisY * c)
     startNormalY = prismatic.localAxisX * c - prismatic.localAxisY * s
     ends.start(context.bodies, prismatic.node1.index, prismatic.node2.index, point1.armX, point1.armY, point2.armX,

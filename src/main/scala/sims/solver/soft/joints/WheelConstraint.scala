@@ -1,5 +1,6 @@
 package sims.solver.soft.joints
 
+import sims.geometry.PortableMath
 import sims.dynamics.joints.WheelJoint
 import sims.solver.soft.{SoftBodies, SoftContext, Softness}
 import sims.solver.soft.SoftBodies.*
@@ -24,8 +25,8 @@ private[sims] final class WheelConstraint(wheel: WheelJoint) extends JointConstr
     point1.update()
     point2.update()
     val angle = wheel.node1.angle
-    val c = math.cos(angle)
-    val s = math.sin(angle)
+    val c = PortableMath.cos(angle)
+    val s = PortableMath.sin(angle)
     startAxisX = wheel.localAxisX * c - wheel.localAxisY * s
     startAxisY = wheel.localAxisX * s + wheel.localAxisY * c
     val bodies = context.bodies

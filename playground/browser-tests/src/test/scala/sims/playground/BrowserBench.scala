@@ -1,0 +1,96 @@
+package sims.playground
+
+import java.io.File
+import java.nio.file.Files
+import java.time.Duration
+import org.openqa.selenium.support.ui.WebDriverWait
+import scala.jdk.CollectionConverters.*
+
+/** Runs the browser benchmark page (`benchPage/staticSite`) in headless Chromium and writes its
+  * table into the "Browser" section of docs/performance.md. Arguments: the page's folder and
+  * the performance document. Run with `./sbt browserTests/browserBench`.
+  */
+object BrowserBench:
+  /** One engine on one scene: ms per step and the sanity check after the run. */
+  final case class Row(scene: String, engine: String, millis: Double, ok: Boolean, detail: String)
+
+  def main(args: Array[String]): Unit =
+    require(args.length == 2, "arguments: the bench page's folder and docs/performance.md")
+    require(Chromium.installed, "Chromium is not installed (apt-get install chromium chromium-driver)")
+    val chromium = Chromium.open(File(args(0)))
+    try
+      chromium.driver.get(chromium.address("index.html"))
+      // The page is busy between its pauses (a chunk of steps of a big scene on a loaded
+      // machine can take long): a poll that times out is tried again.
+      chromium.driver.manage().timeouts().scriptTimeout(Duration.ofMinutes(2))
+      val wait = WebDriverWait(chromium.driver, Duration.ofMinutes(30))
+      wait.ignoring(classOf[org.openqa.selenium.ScriptTimeoutException])
+      wait.ignoring(classOf[org.openqa.selenium.TimeoutException])
+      val results = wait.until { d =>
+        chromium.driver.executeScript("return window.benchResults || null")
+      }.asInstanceOf[java.util.Map[String, AnyRef]].asScala
+      results.get("error").foreach(e => sys.error(s"the bench page failed: $e"))
+      val rows = results("results").asInstanceOf[java.util.List[java.util.Map[String, AnyRef]]].asScala.toSeq.map { r =>
+        Row(r.get("scene").toString, r.get("engine").toString, r.get("millis").asInstanceOf[Number].doubleValue,
+          r.get("ok") == java.lang.Boolean.TRUE, r.get("detail").toString)
+      }
+      val errors = chromium.consoleErrors()
+      require(errors.isEmpty, s"console errors: ${errors.mkString("; ")}")
+      val section = markdown(rows, results("warmUpSteps").toString, results("timedSteps").toString,
+        results("userAgent").toString)
+      println(section)
+      val document = File(args(1)).toPath
+      Files.writeString(document, withSection(Files.readString(document), section))
+    finally chromium.close()
+
+  /** The document with its "## Browser" section replaced by `section` (added at the end if none). */
+  def withSection(document: String, section: String): String =
+    val start = document.indexOf("\n## Browser\n")
+    if start < 0 then document.stripSuffix("\n") + "\n\n" + section
+    else
+      val next = document.indexOf("\n## ", start + 1)
+      document.substring(0, start + 1) + section + (if next < 0 then "" else document.substring(next))
+
+  private def markdown(rows: Seq[Row], warmUp: String, timed: String, agent: String): String =
+    val engines = rows.map(_.engine).distinct
+    val scenes = rows.map(_.scene).distinct
+    def cell(scene: String, engine: String): String =
+      rows.find(r => r.scene == scene && r.engine == engine).fold("")(r =>
+        f"${r.millis}%.3f" + (if r.ok then "" else " (insane)"))
+    def ratio(scene: String, engine: String): String =
+      (rows.find(r => r.scene == scene && r.engine == "SiMS ClassicStep"), rows.find(r => r.scene == scene && r.engine == engine)) match
+        case (Some(s), Some(o)) => f"${o.millis / s.millis}%.2f"
+        case _ => ""
+    val peers = engines.filterNot(_.startsWith("SiMS"))
+    val header = s"| scene | ${engines.mkString(" | ")} |\n|---|${engines.map(_ => "---:").mkString("|")}|\n"
+    val body = scenes.map(s => s"| $s | ${engines.map(cell(s, _)).mkString(" | ")} |").mkString("\n")
+    val ratios = s"| scene | ${peers.map(p => s"$p / SiMS ClassicStep").mkString(" | ")} |\n|---|${peers.map(_ => "---:").mkString("|")}|\n" +
+      scenes.map(s => s"| $s | ${peers.map(ratio(s, _)).mkString(" | ")} |").mkString("\n")
+    val sanity = rows.map(r => s"| ${r.scene} | ${r.engine} | ${if r.ok then "ok" else "failed"} | ${r.detail} |").mkString("\n")
+    s"""## Browser
+       |
+       |The bench scenes in headless Chromium (`./sbt browserTests/browserBench`, which builds the
+       |page of `bench/browser` and writes this section): SiMS compiled with Scala.js (fullLinkJS),
+       |and in the same page planck 1.5.0, matter-js 0.20.0 and Rapier (`@dimforge/rapier2d-compat`
+       |0.21.0, Rust compiled to WebAssembly), each from npm, each building the scene from the same
+       |layout values. Every engine runs $warmUp steps before $timed timed steps; planck and
+       |matter-js with 10 velocity and 10 position iterations as in the JVM bench, Rapier with its
+       |defaults; sleeping off. The sanity check after the run is the JVM bench's (a pyramid stands,
+       |a chain's joints hold their length within 25%, the balls stay in their pit); a result whose
+       |check failed is marked "insane". The machine is shared and noisy: the ratios come from one
+       |run and only they compare. Browser: $agent.
+       |
+       |Milliseconds per step:
+       |
+       |$header$body
+       |
+       |Each peer's time over SiMS ClassicStep's (above 1: SiMS is faster):
+       |
+       |$ratios
+       |
+       |Sanity after the run:
+       |
+       || scene | engine | sanity | measured |
+       ||---|---|---|---|
+       |$sanity
+       |""".stripMargin
