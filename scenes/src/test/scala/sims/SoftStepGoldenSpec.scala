@@ -29,5 +29,5 @@ class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
   }
 
   test("golden-mixed under SoftStep after 240 steps") {
-    soft("golden-mixed", 240) shouldBe "07f59ab07133f61e"
+    soft("golden-mixed", 240) shouldBe "3207c30b42fc1884"
   }
