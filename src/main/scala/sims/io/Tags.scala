@@ -10,6 +10,7 @@ private[io] object Tags:
   val CapsuleShape = 3
   val EdgeShape = 4
   val HullPolygonShape = 5
+  val ChainSegmentShape = 6
   val DistanceJointTag = 0
   val SpringJointTag = 1
   val RevoluteJointTag = 2

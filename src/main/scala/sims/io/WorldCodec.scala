@@ -10,8 +10,8 @@ import sims.dynamics.World
   *   1. the magic bytes "SIMS" and the format version (an Int, [[FormatVersion]]);
   *   2. settings: time step, iterations, gravity, the two flags, time, the grid detector's cell
   *      side and pair limit, the solver (ClassicStep, or SoftStep with all its parameters);
-  *   3. bodies in order: each shape (Circle, Rectangle, RegularPolygon, Capsule, Edge or
-  *      HullPolygon with its arguments and material, collidable, placement, filter bits,
+  *   3. bodies in order: each shape (Circle, Rectangle, RegularPolygon, Capsule, Edge,
+  *      ChainSegment with its neighbours' ends, or HullPolygon with its arguments and material, collidable, placement, filter bits,
   *      sensor), the body's frame (mass, inertia, the shapes' offsets) and state (placement,
   *      velocities, force, torque, fixed, bullet, kinematic, damping, gravity scale, id, name);
   *      then each shape's transient shapes, by index;
@@ -31,7 +31,8 @@ object WorldCodec:
     * (version 1 had no capsules, edges, hull polygons, filter bits or `collideConnected`;
     * version 2 no sensors, bullets or open event pairs; version 3 no broadphase settings of the
     * soft step's own: it used the detector's; version 4 no kinematic bodies, damping, gravity
-    * scales, ids or names, no contact-event switches, no weld, wheel or motor joints, no joint
+    * scales, ids or names, no contact-event switches, no weld, wheel or motor joints, no chain
+    * segments, no joint
     * limits, motors, springs or break limits, and two impulses per revolute or prismatic joint).
     */
   val FormatVersion: Int = 5

@@ -2,7 +2,7 @@ package sims.io
 
 import java.io.{ByteArrayInputStream, DataInputStream, EOFException}
 import sims.collision.{GridDetector, PairKey, PairTracker}
-import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.{Body, Capsule, ChainSegment, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, JointLimits, JointMotor, JointSpring, MotorJoint, MouseJoint,
   PrismaticJoint, RevoluteJoint, SpringJoint, WeldJoint, WheelJoint}
 import sims.geometry.Vector2D
@@ -125,6 +125,13 @@ private[io] object WorldReader:
         val edge = Edge(Vector2D(in.readDouble(), in.readDouble()), Vector2D(in.readDouble(), in.readDouble()))
         in.readDouble() // its density, always 0
         edge
+      case ChainSegmentShape if version >= 5 =>
+        val (start, end) = (Vector2D(in.readDouble(), in.readDouble()), Vector2D(in.readDouble(), in.readDouble()))
+        def ghost(): Option[Vector2D] = if in.readBoolean() then Some(Vector2D(in.readDouble(), in.readDouble())) else None
+        val previous = ghost()
+        val segment = ChainSegment(start, end, previous, ghost())
+        in.readDouble() // its density, always 0
+        segment
       case HullPolygonShape if version >= 2 =>
         val points = IndexedSeq.fill(in.readInt())(Vector2D(in.readDouble(), in.readDouble()))
         HullPolygon(points, in.readDouble())

@@ -2,7 +2,7 @@ package sims.io
 
 import java.io.{ByteArrayOutputStream, DataOutputStream}
 import sims.collision.{GridDetector, PairTracker}
-import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.{Body, Capsule, ChainSegment, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
 import sims.dynamics.joints.{DistanceJoint, Joint, JointLimits, JointMotor, JointOrigin, JointSpring, MotorJoint, MouseJoint,
   PrismaticJoint, RevoluteJoint, SpringJoint, WeldJoint, WheelJoint}
 import sims.solver.{ClassicStep, SoftStep}
@@ -96,6 +96,14 @@ private[io] object WorldWriter:
         out.writeByte(CapsuleShape)
         out.writeDouble(c.halfLength)
         out.writeDouble(c.radius)
+      case c: ChainSegment =>
+        out.writeByte(ChainSegmentShape)
+        for d <- Seq(c.start.x, c.start.y, c.end.x, c.end.y) do out.writeDouble(d)
+        for ghost <- Seq(c.previous, c.next) do
+          out.writeBoolean(ghost.isDefined)
+          for g <- ghost do
+            out.writeDouble(g.x)
+            out.writeDouble(g.y)
       case e: Edge =>
         out.writeByte(EdgeShape)
         for d <- Seq(e.start.x, e.start.y, e.end.x, e.end.y) do out.writeDouble(d)
