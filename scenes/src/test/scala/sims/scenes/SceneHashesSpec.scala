@@ -57,7 +57,8 @@ object SceneHashesSpec:
     "Shapes" -> ("fcd4608cf04ed625", "b9795f2a3bb618e4"),
     "Sensors" -> ("57e39aba131d15e2", "8b819f2ed0f6248f"),
     "Bullet" -> ("85e2f8af98216aea", "3c27f994ffc0c5f5"),
-    "Platformer" -> ("0e01a784731f675e", "b493319b076368c7")
+    "Platformer" -> ("0e01a784731f675e", "b493319b076368c7"),
+    "LimitedRagdoll" -> ("fce65789c5e27c8f", "8afb189631c8c37c")
   )
 
   /** Prints the table above for the current code (run with `scenes/Test/runMain`). */
