@@ -8,7 +8,7 @@ import sims.SlowTest
 import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
 import sims.geometry.Vector2D
 
-/** Energy under the soft step (issue 25): restitution at most 1 never makes energy, and
+/** Energy under the soft step: restitution at most 1 never makes energy, and
   * restitution 1 keeps it. Before the fix a closed box of 100 balls with restitution 1 went
   * from 57 J to 2e9 J in 60 s: restitution bounced each point from the fastest approach seen in
   * the substeps, which warm starting and neighbouring contacts inflate, and one point after the

@@ -7,10 +7,11 @@ import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
 import sims.dynamics.{Circle, World}
 import sims.geometry.Vector2D
 
-/** Angular momentum under the soft step (issue 25): balls colliding in free space keep it.
-  * Before the fix a ball pair's manifold was kept from step to step (contact persistence) with
-  * its normal and arms as computed, while the balls rolled past each other: the two impulses
-  * of a point then acted at points centimetres apart, a couple.
+/** Angular momentum under the soft step: balls colliding in free space keep it. A ball pair's
+  * manifold kept from step to step (contact persistence) with its normal and arms as computed
+  * while the balls rolled past each other made the two impulses of a point act at points
+  * centimetres apart, a couple; a normal kept from the start of a step in which two balls
+  * glance off each other pushed along a line that missed their centres at impact.
   */
 class SoftStepMomentumSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
   import SoftStepMomentumSpec.*
@@ -27,6 +28,31 @@ class SoftStepMomentumSpec extends AnyFunSuite with Matchers with ScalaCheckProp
     info(f"L0 $start%.4f, largest drift $drift%.2e (${drift / math.abs(start) * 100}%.2f%%)")
     drift should be <= 0.01 * math.abs(start)
   }
+
+  for offset <- Seq(0.1, 0.2, 0.3); speed <- Seq(2.0, 6.0) do
+    test(f"two equal balls glancing off each other ($offset%.1f m off centre, $speed%.0f m/s) leave as real balls do") {
+      val world = World()
+      world.gravity = Vector2D.Null
+      world.solver = SoftStep(restitutionThreshold = 0)
+      val Seq(moving, resting) = for x <- Seq(0.0, 1.0) yield
+        val ball = Circle(0.2, 1)
+        ball.pos = Vector2D(x, if x == 0 then 0.0 else offset)
+        ball.restitution = 1
+        ball.friction = 0
+        val body = ball.asBody
+        world += body
+        body
+      moving.linearVelocity = Vector2D(speed, 0)
+      for _ <- 1 to 60 do world.step()
+      // Elastic, frictionless, equal masses: the resting ball leaves along the line of centres
+      // at impact (sin a = offset / 2r) with the moving one's speed along it; the other keeps the rest.
+      val sine = offset / 0.4
+      val cosine = math.sqrt(1 - sine * sine)
+      val expected = Vector2D(speed * cosine * cosine, speed * cosine * sine)
+      (resting.linearVelocity - expected).length should be <= 1e-9 * speed
+      (moving.linearVelocity - (Vector2D(speed, 0) - expected)).length should be <= 1e-9 * speed
+      resting.angularVelocity shouldBe 0.0
+    }
 
   test("random clouds of balls in free space keep angular momentum to 1% of their bodies' moments") {
     var worst = 0.0

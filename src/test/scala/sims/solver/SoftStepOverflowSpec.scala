@@ -6,7 +6,7 @@ import sims.dynamics.{Body, Circle, Rectangle, World}
 import sims.geometry.Vector2D
 import sims.robustness.StateHash
 
-/** A velocity of Double.MaxValue into a contact (issue 25): finite, but the soft step carried
+/** A velocity of Double.MaxValue into a contact: finite, but the soft step carried
   * on with positions of 1.5e306 m where the classic step refuses it. Both now throw an
   * ArithmeticException naming the body and the stage, and leave the world as it was.
   */

@@ -7,7 +7,7 @@ import sims.geometry.Vector2D
 
 /** Coulomb's friction under the soft step: a box on a fixed ramp with the pair's friction
   * mu = 0.5 (tan of 26.6 degrees) holds on gentler slopes and slides down steeper ones at
-  * g (sin a - mu cos a). What the energy and momentum fixes of issue 25 had to keep.
+  * g (sin a - mu cos a). What the fixes for energy and momentum had to keep.
   */
 class SoftStepRampSpec extends AnyFunSuite with Matchers:
   import SoftStepRampSpec.*

@@ -4,7 +4,7 @@ import sims.Defaults
 import sims.collision.{Collision, GridDetector, PairKey}
 import sims.collision.manifold.Manifold
 import sims.collision.narrowphase.PairKind
-import sims.dynamics.{Shape, World}
+import sims.dynamics.{Circle, Shape, World}
 import sims.geometry.PortableMath
 import sims.solver.soft.ContactTable.*
 import sims.solver.soft.SoftBodies.*
@@ -73,7 +73,10 @@ private[sims] final class ContactFinder:
           else
             functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
               speculativeDistance + timeStep * approach, linearSlop, manifold)
-            if manifold.pointCount > 0 then addManifold(table, a, b, key, last)
+            if manifold.pointCount > 0 then
+              addManifold(table, a, b, key, last)
+              if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
+                aimAtImpact(table.current, table.current.count - 1, a.asInstanceOf[Circle], b.asInstanceOf[Circle])
           i += 1
       case detector =>
         detector.detect()
@@ -147,6 +150,56 @@ private[sims] final class ContactFinder:
             hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
           o += 1
       p += 1
+
+  /** Turns contact c of two circles on their bodies' centres to the normal they meet along:
+    * the line of their centres when, moving as at the start of the step, they first touch
+    * within it, or else when they come closest within it (the start's when they touch
+    * already). Its arms then lie along that normal, from each centre to the outline, and its
+    * separation is the gap along it.
+    *
+    * Why: the contact keeps its normal for the whole step, and a contact found before the balls
+    * touch (speculative, up to a step ahead) has the line of centres of the start, which for two
+    * balls glancing past each other is far from the line at impact: the impulses then push
+    * along a line that misses the centres at impact (a couple that changes the angular
+    * momentum, and a rebound in the wrong direction), and the gap along the start's normal
+    * closes before the balls touch. Along the line at impact the collision is as between real
+    * balls; along the line of closest approach the gap never closes early.
+    */
+  private def aimAtImpact(contacts: Contacts, c: Int, circleA: Circle, circleB: Circle): Unit =
+    val a = contacts.bodyA(c)
+    val b = contacts.bodyB(c)
+    val dx = bodies.startX(b) - bodies.startX(a)
+    val dy = bodies.startY(b) - bodies.startY(a)
+    val sA = a * Stride; val sB = b * Stride
+    val vx = bodies.state(sB + VelocityX) - bodies.state(sA + VelocityX)
+    val vy = bodies.state(sB + VelocityY) - bodies.state(sA + VelocityY)
+    val reach = circleA.radius + circleB.radius
+    // |d + t v| = reach: speed2 t^2 + 2 half t + gap = 0.
+    val speed2 = vx * vx + vy * vy
+    val half = dx * vx + dy * vy
+    val gap = dx * dx + dy * dy - reach * reach
+    if gap > 0 && half < 0 then // apart and approaching
+      val discriminant = half * half - speed2 * gap
+      val impact = if discriminant >= 0 then (-half - math.sqrt(discriminant)) / speed2 else Double.PositiveInfinity
+      val t = if impact <= timeStep then impact else math.min(-half / speed2, timeStep)
+      val hot = contacts.hot
+      val k = contacts.offset(c)
+      val ix = dx + t * vx; val iy = dy + t * vy
+      val length = math.sqrt(ix * ix + iy * iy)
+      val nx = ix / length; val ny = iy / length
+      val cold = contacts.cold
+      hot(k + NormalX) = nx; hot(k + NormalY) = ny
+      val q = contacts.hotPoint(c, 0)
+      val r = contacts.coldPoint(c, 0)
+      hot(q + AnchorAX) = circleA.radius * nx; hot(q + AnchorAY) = circleA.radius * ny
+      hot(q + AnchorBX) = -circleB.radius * nx; hot(q + AnchorBY) = -circleB.radius * ny
+      cold(r + CachedAnchorAX) = hot(q + AnchorAX); cold(r + CachedAnchorAY) = hot(q + AnchorAY)
+      cold(r + CachedAnchorBX) = hot(q + AnchorBX); cold(r + CachedAnchorBY) = hot(q + AnchorBY)
+      cold(r + PointX) = bodies.startX(a) + hot(q + AnchorAX)
+      cold(r + PointY) = bodies.startY(a) + hot(q + AnchorAY)
+      val separation = dx * nx + dy * ny - reach
+      cold(r + Separation) = separation
+      cold(r + CachedSeparation) = separation
 
   /** Whether the last step's contact `last` may be kept instead of computing the manifold
     * again: neither body turned by more than `KeepAngle` since it was computed, and the bodies'
