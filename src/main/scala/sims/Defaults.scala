@@ -28,6 +28,9 @@ object Defaults:
   /** Coefficient of restitution of a new shape (a pair uses the product of its two shapes'). */
   val Restitution: Double = 0.7
 
+  /** Density of a shape made without one, kg/m^2. */
+  val Density: Double = 1
+
   /** Coefficient of friction of a new shape (a pair uses the product of its two shapes'). */
   val Friction: Double = 0.707
 

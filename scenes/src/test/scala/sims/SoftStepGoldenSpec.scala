@@ -29,5 +29,5 @@ class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
   }
 
   test("golden-mixed under SoftStep after 240 steps") {
-    soft("golden-mixed", 240) shouldBe "628f8c45862e4158"
+    soft("golden-mixed", 240) shouldBe "4c1008cfed482ed7"
   }

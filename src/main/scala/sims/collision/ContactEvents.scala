@@ -16,7 +16,15 @@ import sims.geometry.Vector2D
   *   and substeps, N s (the soft step; the classic step keeps no impulses and gives 0)
   */
 final case class ContactBegin(shape1: Shape, shape2: Shape, normal: Vector2D, point: Vector2D, approachSpeed: Double,
-    normalImpulse: Double)
+    normalImpulse: Double):
+  /** Whether `shape` is one of the pair. */
+  def involves(shape: Shape): Boolean = (shape1 eq shape) || (shape2 eq shape)
+
+  /** Whether a shape of `body` is one of the pair. */
+  def involves(body: sims.dynamics.Body): Boolean = (shape1.body eq body) || (shape2.body eq body)
+
+  /** The pair's other shape than `shape`; fails unless `shape` is one of the pair. */
+  def other(shape: Shape): Shape = ContactEnd.otherOf(shape1, shape2, shape)
 
 /** Two shapes that stopped touching in the last step, or that cannot touch any more (a shape
   * left the world or stopped colliding): the end of the pair's [[ContactBegin]].
@@ -24,7 +32,23 @@ final case class ContactBegin(shape1: Shape, shape2: Shape, normal: Vector2D, po
   * @param shape1 the shape of the pair that joined the world first
   * @param shape2 the other shape
   */
-final case class ContactEnd(shape1: Shape, shape2: Shape)
+final case class ContactEnd(shape1: Shape, shape2: Shape):
+  /** Whether `shape` is one of the pair. */
+  def involves(shape: Shape): Boolean = (shape1 eq shape) || (shape2 eq shape)
+
+  /** Whether a shape of `body` is one of the pair. */
+  def involves(body: sims.dynamics.Body): Boolean = (shape1.body eq body) || (shape2.body eq body)
+
+  /** The pair's other shape than `shape`; fails unless `shape` is one of the pair. */
+  def other(shape: Shape): Shape = ContactEnd.otherOf(shape1, shape2, shape)
+
+/** The pairs' shared rule. */
+object ContactEnd:
+  /** `shape`'s partner in the pair (shape1, shape2); fails unless it is one of them. */
+  private[collision] def otherOf(shape1: Shape, shape2: Shape, shape: Shape): Shape =
+    if shape1 eq shape then shape2
+    else if shape2 eq shape then shape1
+    else throw IllegalArgumentException(s"shape $shape is not one of the pair ($shape1, $shape2)")
 
 /** The contact events of a world's last step (`World.contactEvents`): the pairs of shapes that
   * began to touch and those that stopped, each in the shapes' world order (by the first shape's

@@ -3,7 +3,7 @@ package sims.collision
 import sims.dynamics.{Body, Shape}
 
 /** Which pairs of shapes may collide at all (SiMS's broadphase rule, with the filters of
-  * Box2D): shapes of different bodies, not both fixed, both collidable, accepted by their
+  * Box2D): shapes of different bodies, not both fixed or kinematic, both collidable, accepted by their
   * collision filters (`categoryBits`, `maskBits`, `groupIndex`), neither transient to the
   * other, and their bodies not joined by a joint whose `collideConnected` is false. The
   * broadphase applies it to every pair whose bounds overlap. Defaults accept every pair, as
@@ -14,7 +14,7 @@ private[sims] object PairFilter:
   def accepts(a: Shape, b: Shape): Boolean =
     (a.body ne b.body) && a.collidable && b.collidable &&
       !a.sensor && !b.sensor &&
-      !(a.body.fixed && b.body.fixed) &&
+      !(a.body.immovable && b.body.immovable) &&
       filtersAccept(a, b) &&
       !jointSeparated(a.body, b.body) &&
       (a.transientShapes.isEmpty || !a.transientShapes.contains(b)) &&
@@ -27,7 +27,7 @@ private[sims] object PairFilter:
   def sensorSees(sensor: Shape, visitor: Shape): Boolean =
     (sensor.body ne visitor.body) && sensor.collidable && visitor.collidable &&
       sensor.sensor && !visitor.sensor &&
-      !(sensor.body.fixed && visitor.body.fixed) &&
+      !(sensor.body.immovable && visitor.body.immovable) &&
       filtersAccept(sensor, visitor) &&
       !jointSeparated(sensor.body, visitor.body) &&
       (sensor.transientShapes.isEmpty || !sensor.transientShapes.contains(visitor)) &&

@@ -54,6 +54,8 @@ private[sims] final class PairTracker(ordered: Boolean):
     * and not reported yet this step): the caller then describes it with `describe`.
     */
   def touch(a: Shape, b: Shape): Boolean =
+    // A contact pair of a shape whose contact events are off is not tracked (sensor pairs are).
+    if !ordered && (!a.enableContactEvents || !b.enableContactEvents) then return false
     lastFlipped = !ordered && b.worldIndex < a.worldIndex
     val first = if lastFlipped then b else a
     val second = if lastFlipped then a else b
@@ -104,7 +106,8 @@ private[sims] final class PairTracker(ordered: Boolean):
     */
   private def keeps(first: Shape, second: Shape, key: Long, world: World): Boolean =
     !ordered && inWorld(first, (key >>> 32).toInt, world) && inWorld(second, key.toInt, world) &&
-      world.enableCollisionDetection && PairFilter.accepts(first, second) &&
+      world.enableCollisionDetection && world.enableContactEvents && first.enableContactEvents &&
+      second.enableContactEvents && PairFilter.accepts(first, second) &&
       separation.measure(first, second) && separation.distance <= Defaults.ContactHysteresis
 
   private def show(): Unit =

@@ -52,6 +52,48 @@ private[sims] final class ShapeQueries(world: World):
   def near(minX: Double, minY: Double, maxX: Double, maxY: Double, found: ArrayBuffer[Shape]): Unit =
     fresh().query(minX, minY, maxX, maxY, found)
 
+  private val sweep = ShapeCast()
+  private val separation = ShapeSeparation()
+
+  /** The first shape `shape` (at rotation `shape.rotation`) meets when swept from `from` to
+    * `to` without turning, among those `filter` accepts, with where, the hit shape's normal and
+    * the fraction of the path; None if it meets none. Puts `shape` back where it was.
+    */
+  def castShape(shape: Shape, from: Vector2D, to: Vector2D, filter: Shape => Boolean): Option[RayHit] =
+    val home = shape.pos
+    val angle = shape.rotation
+    val dx = to.x - from.x
+    val dy = to.y - from.y
+    shape.place(from.x, from.y, angle)
+    val start = shape.AABB
+    shape.place(to.x, to.y, angle)
+    val end = shape.AABB
+    val found = ArrayBuffer.empty[Shape]
+    fresh().query(math.min(start.minVertex.x, end.minVertex.x), math.min(start.minVertex.y, end.minVertex.y),
+      math.max(start.maxVertex.x, end.maxVertex.x), math.max(start.maxVertex.y, end.maxVertex.y), found)
+    var best: Option[RayHit] = None
+    var bestFraction = 1.0
+    for other <- found do
+      if (other ne shape) && filter(other) then
+        val t = sweep.fraction(shape, from.x, from.y, angle, dx, dy, other, bestFraction)
+        // On equal fractions the shape first in world order (found is in world order).
+        if t <= bestFraction && (best.isEmpty || t < bestFraction) then
+          bestFraction = t
+          best = Some(RayHit(other, Vector2D(sweep.pointX, sweep.pointY), Vector2D(sweep.normalX, sweep.normalY), t))
+    shape.place(home.x, home.y, angle)
+    best
+
+  /** The shapes `shape` overlaps where it is (by more than touching), among those `filter`
+    * accepts, in world order; `shape` itself and its body's other shapes are not among them.
+    */
+  def overlapping(shape: Shape, filter: Shape => Boolean): IndexedSeq[Shape] =
+    val box = shape.AABB
+    val found = ArrayBuffer.empty[Shape]
+    fresh().query(box.minVertex.x, box.minVertex.y, box.maxVertex.x, box.maxVertex.y, found)
+    found.iterator.filter(other =>
+      (other ne shape) && (shape.body == null || (other.body ne shape.body)) && filter(other) &&
+        ShapeCast.overlap(separation, shape, other)).toIndexedSeq
+
   /** The shapes that contain the point, in world order. */
   def shapesAt(point: Vector2D, filter: Shape => Boolean): IndexedSeq[Shape] =
     query(point.x, point.y, point.x, point.y, s => s.contains(point) && filter(s))

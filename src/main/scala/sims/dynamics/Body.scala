@@ -125,10 +125,12 @@ final class Body(initialShapes: Shape*):
     freeI = inertia
     updateInverseMass()
 
-  /** Sets 1 / mass and 1 / I from the shapes' mass and inertia and whether the body is fixed. */
+  /** Sets 1 / mass and 1 / I from the shapes' mass and inertia and whether the body is fixed
+    * or kinematic.
+    */
   private[sims] def updateInverseMass(): Unit =
-    invMass = if _fixed then 0 else 1 / freeMass
-    invI = if _fixed then 0 else 1 / freeI
+    invMass = if _fixed || _kinematic then 0 else 1 / freeMass
+    invI = if _fixed || _kinematic then 0 else 1 / freeI
 
   /** Places every shape from the body's centre and rotation. */
   private[sims] def placeShapes(): Unit =
@@ -331,11 +333,13 @@ final class Body(initialShapes: Shape*):
     if world != null then world.shapesMoved()
     touchedByUser()
 
-  /** Mass in kg: the shapes' sum, or positive infinity when fixed. */
-  def mass: Double = if _fixed then Double.PositiveInfinity else freeMass
+  /** Mass in kg: the shapes' sum, or positive infinity when fixed or kinematic. */
+  def mass: Double = if _fixed || _kinematic then Double.PositiveInfinity else freeMass
 
-  /** Moment of inertia about the centre of mass (parallel-axis sum), or infinity when fixed. */
-  def I: Double = if _fixed then Double.PositiveInfinity else freeI
+  /** Moment of inertia about the centre of mass (parallel-axis sum), or infinity when fixed or
+    * kinematic.
+    */
+  def I: Double = if _fixed || _kinematic then Double.PositiveInfinity else freeI
 
   /** Whether the body is fixed (immovable by forces and impulses). */
   def fixed: Boolean = _fixed
@@ -352,9 +356,90 @@ final class Body(initialShapes: Shape*):
     _fixed = value
     if value then
       vx = 0; vy = 0; w = 0
+      _kinematic = false
     updateInverseMass()
     // A body just fixed is a fixed body the user moved: what slept on it wakes.
     if changed && value then touchedByUser()
+
+  private var _kinematic = false
+
+  /** Whether the body is kinematic (default false): moved by its velocity alone, which only the
+    * user sets; forces, gravity, contacts and joints never change it, and its mass is infinite to
+    * every other body. It pushes the dynamic bodies in its way and carries those that rest on it
+    * by friction (a moving platform). Two kinematic or fixed bodies never collide.
+    */
+  def kinematic: Boolean = _kinematic
+
+  /** Makes the body kinematic (it keeps its velocities; it stops being fixed) or dynamic again.
+    * A body with an [[Edge]] cannot be kinematic.
+    */
+  def kinematic_=(value: Boolean): Unit =
+    if value && hasEdge then
+      throw IllegalArgumentException(s"kinematic must stay false for a body with an Edge (edges have no mass), got true")
+    if value != _kinematic then
+      placements += 1
+      _kinematic = value
+      if value then _fixed = false
+      updateInverseMass()
+
+  /** Whether neither forces nor contacts move the body: it is fixed or kinematic. */
+  private[sims] def immovable: Boolean = _fixed || _kinematic
+
+  /** Whether the body is kinematic and moving: it wakes what it touches and keeps a step busy. */
+  private[sims] def movesItself: Boolean = _kinematic && (vx != 0 || vy != 0 || w != 0)
+
+  private var _linearDamping = 0.0
+  private var _angularDamping = 0.0
+  private var _gravityScale = 1.0
+
+  /** How fast the body's linear velocity decays by itself, 1/s (default 0): each step of length
+    * h scales it by 1 / (1 + h linearDamping), as air drag would.
+    */
+  def linearDamping: Double = _linearDamping
+
+  /** Sets the linear damping; must be finite and at least 0. */
+  def linearDamping_=(value: Double): Unit =
+    _linearDamping = Shape.requireNonNegative("linearDamping", value)
+
+  /** How fast the body's angular velocity decays by itself, 1/s (default 0), as `linearDamping`. */
+  def angularDamping: Double = _angularDamping
+
+  /** Sets the angular damping; must be finite and at least 0. */
+  def angularDamping_=(value: Double): Unit =
+    _angularDamping = Shape.requireNonNegative("angularDamping", value)
+
+  /** The part of the world's gravity that acts on this body (default 1; 0 makes it float,
+    * -1 fall upwards).
+    */
+  def gravityScale: Double = _gravityScale
+
+  /** Sets the gravity scale; must be finite. */
+  def gravityScale_=(value: Double): Unit =
+    _gravityScale = Vector2D.requireFinite("gravityScale", value)
+
+  /** Whether the body's velocities decay by themselves (a damping not 0). */
+  private[sims] def damped: Boolean = _linearDamping != 0 || _angularDamping != 0
+
+  /** Anything of the user's that belongs with this body (default None): never read by the library. */
+  var userData: Option[Any] = None
+
+  private var _name: Option[String] = None
+
+  /** The body's name (default None), kept by save and load: `World.bodyNamed` finds it. */
+  def name: Option[String] = _name
+
+  /** Names the body (or takes its name away with None); a name must not be null. */
+  def name_=(value: Option[String]): Unit =
+    if value == null || value.exists(_ == null) then throw IllegalArgumentException("name must not be null, use None")
+    _name = value
+
+  /** The body's id in its world, -1 before it first joins one: given by the world when the body
+    * joins it (0, 1, 2, ... in the order bodies joined, never reused), kept by save and load, so
+    * that `World.bodyById` finds the same body in a loaded world.
+    */
+  def id: Int = _id
+
+  private[sims] var _id: Int = -1
 
   /** Adds `f` to the force on the centre of mass; nothing happens when the body is fixed.
     * Fails, changing nothing, if `f` or the total force would not be finite.
@@ -422,7 +507,10 @@ final class Body(initialShapes: Shape*):
   /** True if `point` lies in one of the body's shapes. */
   def contains(point: Vector2D): Boolean = shapes.exists(_.contains(point))
 
-  override def toString: String = s"Body(pos = $pos, shapes = ${shapes.mkString(", ")})"
+  override def toString: String =
+    val named = _name.fold("")(n => s"name = $n, ")
+    val numbered = if _id >= 0 then s"id = ${_id}, " else ""
+    s"Body($numbered${named}pos = $pos, shapes = ${shapes.mkString(", ")})"
 
   /** The body by its shapes, for errors about its mass (its position may not exist yet). */
   private def describe: String = s"Body(${shapes.mkString(", ")})"

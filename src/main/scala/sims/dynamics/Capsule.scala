@@ -4,7 +4,7 @@ package sims.dynamics
   * the shape's rotation (the x axis at rotation 0), with a density (kg/m^2): a rectangle of
   * 2 halfLength x 2 radius with a half disc at each end.
   */
-final class Capsule(val halfLength: Double, val radius: Double, val density: Double) extends RoundedSegment:
+final class Capsule(val halfLength: Double, val radius: Double, val density: Double = sims.Defaults.Density) extends RoundedSegment:
   Shape.requirePositive("halfLength", halfLength)
   Shape.requirePositive("radius", radius)
   Shape.requirePositive("density", density)

@@ -3,7 +3,7 @@ package sims.dynamics
 import sims.geometry.{AABB, Projection, Vector2D}
 
 /** A disc of the given radius (m) and density (kg/m^2). */
-final class Circle(val radius: Double, val density: Double) extends Shape:
+final class Circle(val radius: Double, val density: Double = sims.Defaults.Density) extends Shape:
   Shape.requirePositive("radius", radius)
   Shape.requirePositive("density", density)
 

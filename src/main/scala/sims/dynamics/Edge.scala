@@ -12,7 +12,7 @@ import sims.geometry.{PortableMath, Vector2D}
   *
   * (Named so as not to clash with the geometry's [[sims.geometry.Segment]].)
   */
-final class Edge(
+class Edge(
     /** Where the edge began when it was made (world coordinates). */
     val start: Vector2D,
     /** Where the edge ended when it was made (world coordinates). */

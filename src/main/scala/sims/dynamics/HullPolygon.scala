@@ -35,7 +35,7 @@ object HullPolygon:
   /** The convex hull of `points` as a shape of the given density. Fails, naming `points`,
     * unless there are at least 3 distinct points, not all on one line, all finite.
     */
-  def apply(points: Seq[Vector2D], density: Double): HullPolygon =
+  def apply(points: Seq[Vector2D], density: Double = sims.Defaults.Density): HullPolygon =
     if points == null then throw IllegalArgumentException("points must not be null")
     val kept = IndexedSeq.from(points)
     new HullPolygon(kept, density, hullOf(kept))

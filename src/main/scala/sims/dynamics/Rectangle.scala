@@ -5,7 +5,7 @@ import sims.geometry.Vector2D
 /** A rectangle with half extents `halfWidth`, `halfHeight` (m) and a density (kg/m^2).
   * Vertices go counter-clockwise, starting at the upper-right one (at rotation 0).
   */
-final class Rectangle(val halfWidth: Double, val halfHeight: Double, val density: Double)
+final class Rectangle(val halfWidth: Double, val halfHeight: Double, val density: Double = sims.Defaults.Density)
     extends Polygon(Rectangle.corners(halfWidth, halfHeight)):
   Shape.requirePositive("density", density)
 

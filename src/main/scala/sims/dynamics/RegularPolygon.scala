@@ -5,7 +5,7 @@ import sims.geometry.{PortableMath, Vector2D}
 /** A regular polygon of `n` (at least 3) vertices on a circle of `radius` (the circumradius,
   * m) and a density (kg/m^2). Vertex i is `(0, radius)` rotated by `2 pi i / n`.
   */
-final class RegularPolygon(val n: Int, val radius: Double, val density: Double)
+final class RegularPolygon(val n: Int, val radius: Double, val density: Double = sims.Defaults.Density)
     extends Polygon(RegularPolygon.corners(n, radius)):
   Shape.requirePositive("density", density)
 

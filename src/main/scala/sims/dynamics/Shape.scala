@@ -67,6 +67,24 @@ abstract class Shape:
     Shape.requireNonNegative("friction", value)
     _friction = value
 
+  /** Whether this shape's contacts are reported as contact events (default true); off, its
+    * pairs make no `World.contactEvents` (a touching pair ends at the next step). Its contacts
+    * are solved all the same.
+    */
+  def enableContactEvents: Boolean = _enableContactEvents
+
+  /** Switches this shape's contact events; the next step looks at its pairs again, even in a
+    * world whose bodies all sleep.
+    */
+  def enableContactEvents_=(value: Boolean): Unit =
+    _enableContactEvents = value
+    if _body != null && _body.world != null then _body.world.eventSwitchChanged()
+
+  private var _enableContactEvents = true
+
+  /** Anything of the user's that belongs with this shape (default None): never read by the library. */
+  var userData: Option[Any] = None
+
   /** Whether this shape takes part in collisions at all. */
   var collidable: Boolean = true
 

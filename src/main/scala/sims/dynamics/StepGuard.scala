@@ -53,7 +53,14 @@ trait StepGuard:
         throw IllegalArgumentException(s"joint $j connects a body that is not in this world")
       // The time step or the masses may have changed since the joint joined.
       forceIntervalProblem(j).foreach(problem => throw IllegalStateException(problem))
+      // A joint given a soft-step feature after it joined a classic world.
+      this.classicProblem(j).foreach(problem => throw IllegalStateException(problem))
       i += 1
+
+  /** Why the world's solver, the classic step, cannot step `joint`, or None (also under any
+    * other solver).
+    */
+  private[sims] def classicProblem(joint: sims.dynamics.joints.Joint): Option[String]
 
   /** Why the solver cannot step `joint` (see `Joint.forceIntervalProblem`), or None. */
   protected def forceIntervalProblem(joint: sims.dynamics.joints.Joint): Option[String] =

@@ -97,15 +97,32 @@ class World(makeDetector: World => Detector = GridDetector(_))
   /** A fixed body was placed by the user: the next soft step wakes what sleeps on it. */
   private[sims] def fixedBodyMoved(): Unit = revision += 1
 
+  /** A shape's contact-event switch changed: the next step looks at every pair again. */
+  private[sims] def eventSwitchChanged(): Unit = revision += 1
+
   /** What `step()` runs (default [[sims.solver.ClassicStep]]); may be switched at any time. */
   def solver: Solver = _solver
 
-  /** Chooses the solver of the next steps; must not be null. */
+  /** Chooses the solver of the next steps; must not be null. Switching to the classic step
+    * fails, changing nothing, while a joint has a feature only the soft step steps (a motor, a
+    * spring, a break force, or a kind SiMS 1.2 has not: weld, wheel, motor joint).
+    */
   def solver_=(value: Solver): Unit =
     if value == null then throw IllegalArgumentException("solver must not be null")
+    if value eq ClassicStep then
+      jointBuffer.foreach(j => classicStepProblem(j).foreach(p => throw IllegalArgumentException(p)))
     // Only the soft step keeps bodies asleep; any other starts with every body awake.
     if !(value eq _solver) then wakeAll()
     _solver = value
+
+  private[sims] def classicProblem(joint: Joint): Option[String] =
+    if _solver eq ClassicStep then classicStepProblem(joint) else None
+
+  /** Why the classic step cannot step `joint`, or None. */
+  private def classicStepProblem(joint: Joint): Option[String] =
+    joint.softStepFeature.map(feature =>
+      s"$joint has $feature, which ClassicStep (SiMS 1.2's step) cannot step: use the soft step, " +
+        "world.solver = SoftStep()")
 
   /** Duration of one step in seconds (default 1/60). */
   def timeStep: Double = _timeStep
@@ -175,6 +192,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     body.world = this
     body.index = bodyBuffer.length
     bodyBuffer += body
+    bodyIds.register(body)
     shapeList.add(body)
     shapesMoved()
     countFlags(body, 1)
@@ -192,6 +210,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     if jointBuffer.exists(_ eq joint) then throw IllegalArgumentException(s"joint $joint is already in this world")
     if joint.world != null then throw IllegalArgumentException(s"joint $joint is already in another world")
     forceIntervalProblem(joint).foreach(problem => throw IllegalArgumentException(problem))
+    classicProblem(joint).foreach(problem => throw IllegalArgumentException(problem))
     jointBuffer += joint
     joint.world = this
     if !joint.collideConnected then joint.keepApart(true)
@@ -208,6 +227,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
       if body.fixed then wakeAll() else body.wake()
       revision += 1
       bodyBuffer.remove(i)
+      bodyIds.unregister(body)
       body.world = null
       body.index = -1
       // The later bodies move down one place: their indices follow.
@@ -220,13 +240,62 @@ class World(makeDetector: World => Detector = GridDetector(_))
   /** Removes a joint. */
   def -=(joint: Joint): this.type =
     val i = jointBuffer.indexWhere(_ eq joint)
-    if i >= 0 then
-      joint.node1.wake(); joint.node2.wake()
-      revision += 1
-      jointBuffer.remove(i)
-      joint.world = null
-      if !joint.collideConnected then joint.keepApart(false)
+    if i >= 0 then removeJointAt(i)
     this
+
+  private def removeJointAt(i: Int): Unit =
+    val joint = jointBuffer.remove(i)
+    joint.node1.wake(); joint.node2.wake()
+    revision += 1
+    joint.world = null
+    if !joint.collideConnected then joint.keepApart(false)
+
+  /** The joints that broke in the last step (their reaction exceeded `breakForce` or
+    * `breakTorque`), removed from the world, in world order.
+    */
+  def jointBreaks: IndexedSeq[JointBreak] = breaks.toIndexedSeq
+
+  private val breaks = ArrayBuffer.empty[JointBreak]
+  // Where each broken joint was in the list, to put it back if the step fails.
+  private val brokenAt = ArrayBuffer.empty[Int]
+
+  /** Removes the joints whose reaction exceeds their break limits, recording each break. */
+  private def breakJoints(): Unit =
+    breaks.clear()
+    brokenAt.clear()
+    var i = 0
+    var removed = 0
+    while i < jointBuffer.length do
+      val j = jointBuffer(i)
+      if j.overloaded then
+        breaks += JointBreak(j, j.reactionForce, j.reactionTorque)
+        brokenAt += i + removed
+        removeJointAt(i)
+        removed += 1
+      else i += 1
+
+  /** Puts the joints broken in the failed step back where they were. */
+  private def unbreakJoints(): Unit =
+    for (b, at) <- breaks.zip(brokenAt) do
+      jointBuffer.insert(at, b.joint)
+      b.joint.world = this
+      if !b.joint.collideConnected then b.joint.keepApart(true)
+    breaks.clear()
+    brokenAt.clear()
+
+  // The ids and names of the bodies and joints.
+  private val bodyIds = WorldIds()
+
+  /** The body of this world with that `id` (see `Body.id`), if there is one: in a loaded world,
+    * the body that had it when the world was saved.
+    */
+  def bodyById(id: Int): Option[Body] = bodyIds.body(id).filter(_.world eq this)
+
+  /** The first body of this world (in world order) with that `name`, if any. */
+  def bodyNamed(name: String): Option[Body] = bodyBuffer.find(_.name.contains(name))
+
+  /** The first joint of this world (in world order) with that `name`, if any. */
+  def jointNamed(name: String): Option[Joint] = jointBuffer.find(_.name.contains(name))
 
   /** Counts the sensors and the bullet of a body joining (`sign` 1) or leaving (-1). */
   private def countFlags(body: Body, sign: Int): Unit =
@@ -260,6 +329,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
       _solver.step(this)
       shapesMoved() // also after: a query made during the step (by a joint, say) saw other positions
       enterStage(StepGuard.EventsStage)
+      breakJoints()
       finishEvents()
       enterStage(StepGuard.PostStepStage)
       postStep()
@@ -285,6 +355,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     * pairs and the solvers' carried data.
     */
   private def undoStep(): Unit =
+    unbreakJoints() // first: the saved state is of the joints before the step
     beforeStep.load(this)
     undoEvents()
     undoCarriedStates()
@@ -302,9 +373,12 @@ class World(makeDetector: World => Detector = GridDetector(_))
 
   private[sims] def time_=(t: Double): Unit = _time = t
 
-  /** The world in a line: its time, how many bodies and joints it has, and its solver. */
+  /** The world by its counts, time and solver, e.g.
+    * `World(bodies = 3, joints = 1, shapes = 4, time = 0.5 s, solver = ClassicStep)`.
+    */
   override def toString: String =
-    s"World(time = $time s, ${bodyBuffer.size} bodies, ${jointBuffer.size} joints, solver = ${_solver})"
+    s"World(bodies = ${bodyBuffer.length}, joints = ${jointBuffer.length}, shapes = ${shapeList.array.length}, " +
+      s"time = ${_time} s, solver = ${_solver})"
 
 /** The queries' default filter. */
 object World:

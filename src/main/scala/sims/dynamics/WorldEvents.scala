@@ -19,6 +19,11 @@ trait WorldEvents:
   private var sensorCount = 0
   private var sensorListStale = false
 
+  /** Whether the steps report contact events at all (default true). Off, a step spends no work
+    * on them (the pairs touching end at the next step); sensor events are not affected.
+    */
+  var enableContactEvents: Boolean = true
+
   /** The contact events of the last step: the pairs of shapes that began to touch and those
     * that stopped, every begin followed by exactly one end in a later step (see
     * [[sims.collision.ContactEvents]]); valid until the next step.
@@ -52,7 +57,7 @@ trait WorldEvents:
     * overlaps, then the begins and ends of both.
     */
   protected def finishEvents(): Unit =
-    if !solver.reportsTouching then reportContacts()
+    if !solver.reportsTouching && enableContactEvents then reportContacts()
     contactTracker.finishStep(this)
     if sensorCount > 0 then
       if sensorListStale then

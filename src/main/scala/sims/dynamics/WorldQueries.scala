@@ -6,7 +6,8 @@ import sims.geometry.{AABB, Vector2D}
 
 /** A world's queries: ray casts and box and point queries over its shapes, through the world's
   * broadphase (see [[sims.collision.ShapeQueries]]), which looks at the shapes near the ray or
-  * box only.
+  * box only. Every query skips sensors unless asked for them with `sensors = true` (a sensor is
+  * a region, not a thing a ray or a swept shape would stop at).
   */
 trait WorldQueries:
   this: World =>
@@ -18,35 +19,64 @@ trait WorldQueries:
     * none. Shapes it starts inside are not hit; a user's shape kind is hit only if its class
     * overrides `Shape.rayCast`. Looks at the shapes near the path only (through a grid).
     */
-  def rayCast(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape): Option[RayHit] =
-    queries.rayCast(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to), requireFilter(filter))
+  def rayCast(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape,
+      sensors: Boolean = false): Option[RayHit] =
+    queries.rayCast(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to),
+      requireFilter(filter, sensors))
 
   /** Every shape the path from `from` to `to` enters, as `rayCast` finds them, nearest first
     * (shapes hit at the same fraction in the order they joined the world).
     */
-  def rayCastAll(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape): IndexedSeq[RayHit] =
-    queries.rayCastAll(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to), requireFilter(filter))
+  def rayCastAll(from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape,
+      sensors: Boolean = false): IndexedSeq[RayHit] =
+    queries.rayCastAll(Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to),
+      requireFilter(filter, sensors))
 
   /** The shapes whose bounding boxes overlap (or touch) `box`, among those `filter` accepts, in
     * the order they joined the world. Looks at the shapes near the box only.
     */
-  def query(box: AABB, filter: Shape => Boolean = World.AnyShape): IndexedSeq[Shape] =
+  def query(box: AABB, filter: Shape => Boolean = World.AnyShape, sensors: Boolean = false): IndexedSeq[Shape] =
     if box == null then throw IllegalArgumentException("box must not be null")
     Vector2D.requireFinite("box.minVertex", box.minVertex)
     Vector2D.requireFinite("box.maxVertex", box.maxVertex)
     if box.minVertex.x > box.maxVertex.x || box.minVertex.y > box.maxVertex.y then
       throw IllegalArgumentException(s"box must have its minVertex below and left of its maxVertex, got $box")
-    queries.query(box.minVertex.x, box.minVertex.y, box.maxVertex.x, box.maxVertex.y, requireFilter(filter))
+    queries.query(box.minVertex.x, box.minVertex.y, box.maxVertex.x, box.maxVertex.y, requireFilter(filter, sensors))
 
   /** The shapes that contain `point` (world coordinates), among those `filter` accepts, in the
     * order they joined the world (the viewer picks the last free one).
     */
-  def shapesAt(point: Vector2D, filter: Shape => Boolean = World.AnyShape): IndexedSeq[Shape] =
-    queries.shapesAt(Vector2D.requireFinite("point", point), requireFilter(filter))
+  def shapesAt(point: Vector2D, filter: Shape => Boolean = World.AnyShape, sensors: Boolean = false): IndexedSeq[Shape] =
+    queries.shapesAt(Vector2D.requireFinite("point", point), requireFilter(filter, sensors))
 
-  private def requireFilter(filter: Shape => Boolean): Shape => Boolean =
+  /** The first shape that `shape` meets when swept from `from` to `to` without turning (a
+    * circle, a convex polygon such as a box, or a capsule, belonging to no body; at its own
+    * `rotation`), among those `filter` accepts: the shape hit, where they meet, the hit shape's
+    * outward normal there and the fraction of the path travelled (0 when it overlaps a shape
+    * at `from` already); None if it meets none. Looks at the shapes near the path only.
+    */
+  def castShape(shape: Shape, from: Vector2D, to: Vector2D, filter: Shape => Boolean = World.AnyShape,
+      sensors: Boolean = false): Option[RayHit] =
+    if shape == null then throw IllegalArgumentException("shape must not be null")
+    if shape.body != null then throw IllegalArgumentException(s"shape $shape belongs to a body: cast a shape of its own")
+    if !sims.collision.ShapeCast.castable(shape) then
+      throw IllegalArgumentException(s"shape must be a circle, a convex polygon or a capsule, got $shape")
+    queries.castShape(shape, Vector2D.requireFinite("from", from), Vector2D.requireFinite("to", to),
+      requireFilter(filter, sensors))
+
+  /** The shapes that `shape` overlaps exactly (not just by bounds) where it is now, among those
+    * `filter` accepts, in the order they joined the world: a shape of the user's own placed with
+    * `pos` and `rotation`, or a shape of the world (then its body's shapes are left out).
+    * Shapes that only touch do not count. Looks at the shapes near it only.
+    */
+  def overlapping(shape: Shape, filter: Shape => Boolean = World.AnyShape, sensors: Boolean = false): IndexedSeq[Shape] =
+    if shape == null then throw IllegalArgumentException("shape must not be null")
+    queries.overlapping(shape, requireFilter(filter, sensors))
+
+  /** `filter`, and unless `sensors` is true, no sensor (queries skip sensors by default). */
+  private def requireFilter(filter: Shape => Boolean, sensors: Boolean): Shape => Boolean =
     if filter == null then throw IllegalArgumentException("filter must not be null")
-    filter
+    if sensors then filter else s => !s.sensor && filter(s)
 
   /** Tells the queries that shapes moved, joined or left: they take the bounds again when next asked. */
   private[sims] def shapesMoved(): Unit = queries.stale = true

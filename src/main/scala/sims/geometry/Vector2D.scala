@@ -85,6 +85,12 @@ object Vector2D:
   /** The null vector (0, 0). */
   val Null: Vector2D = Vector2D(0, 0)
 
+  /** The zero vector (0, 0): the same as `Null`, by the name other libraries use. */
+  val Zero: Vector2D = Null
+
+  /** `n * v`: the vector `v` scaled by `n`, the same as `v * n`. */
+  extension (n: Double) inline def *(v: Vector2D): Vector2D = Vector2D(n * v.x, n * v.y)
+
   /** The unit vector along x, (1, 0). */
   val i: Vector2D = Vector2D(1, 0)
 

@@ -10,8 +10,12 @@ private[io] object Tags:
   val CapsuleShape = 3
   val EdgeShape = 4
   val HullPolygonShape = 5
+  val ChainSegmentShape = 6
   val DistanceJointTag = 0
   val SpringJointTag = 1
   val RevoluteJointTag = 2
   val PrismaticJointTag = 3
   val MouseJointTag = 4
+  val WeldJointTag = 5
+  val WheelJointTag = 6
+  val MotorJointTag = 7

@@ -11,15 +11,16 @@ import sims.dynamics.World
   *   2. settings: time step, iterations, gravity, the two flags, time, the grid detector's cell
   *      side and pair limit, the solver (ClassicStep, or SoftStep with all its parameters),
   *      `enableSleep`;
-  *   3. bodies in order: each shape (Circle, Rectangle, RegularPolygon, Capsule, Edge or
-  *      HullPolygon with its arguments and material, collidable, placement, filter bits,
-  *      sensor), the body's frame (mass, inertia, the shapes' offsets) and state (placement,
-  *      velocities, force, torque, fixed, bullet, and sleep: `enableSleep`, `sleepThreshold`,
-  *      awake, the time it has rested and its sleeping island); then each shape's transient
-  *      shapes, by index;
-  *   4. joints in order (Distance, Spring, Revolute, Prismatic, Mouse): bodies by index, the
-  *      anchors and body placements they were made from, their settings, soft-step impulses
-  *      and `collideConnected`;
+  *   3. bodies in order: each shape (Circle, Rectangle, RegularPolygon, Capsule, Edge,
+  *      ChainSegment with its neighbours' ends, or HullPolygon with its arguments and material,
+  *      collidable, placement, filter bits, sensor), the body's frame (mass, inertia, the
+  *      shapes' offsets) and state (placement, velocities, force, torque, fixed, bullet,
+  *      kinematic, damping, gravity scale, id, name, and sleep: `enableSleep`,
+  *      `sleepThreshold`, awake, the time it has rested and its sleeping island); then each
+  *      shape's transient shapes, by index;
+  *   4. joints in order (Distance, Spring, Revolute, Prismatic, Mouse, Weld, Wheel, Motor):
+  *      bodies by index, the anchors and body placements they were made from, their settings
+  *      (limits, motor, spring), soft-step impulses, `collideConnected`, name and break limits;
   *   5. the soft step's contact table (the last step's contacts with their impulses), if the
   *      world has stepped with the soft step;
   *   6. the pairs of shapes touching and overlapping sensors (the open pairs of the contact and
@@ -32,7 +33,10 @@ object WorldCodec:
   /** The version of the format `save` writes; `load` reads this one and every earlier one
     * (version 1 had no capsules, edges, hull polygons, filter bits or `collideConnected`;
     * version 2 no sensors, bullets or open event pairs; version 3 no broadphase settings of the
-    * soft step's own: it used the detector's; version 5 and earlier no sleeping: every body awake).
+    * soft step's own: it used the detector's; version 4 no kinematic bodies, damping, gravity
+    * scales, ids or names, no contact-event switches, no weld, wheel or motor joints, no chain
+    * segments, no joint limits, motors, springs or break limits, and two impulses per revolute
+    * or prismatic joint; version 5 no sleeping: every body awake).
     */
   val FormatVersion: Int = 6
 

@@ -2,8 +2,9 @@ package sims.io
 
 import java.io.{ByteArrayInputStream, DataInputStream, EOFException}
 import sims.collision.{GridDetector, PairKey, PairTracker}
-import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
-import sims.dynamics.joints.{DistanceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
+import sims.dynamics.{Body, Capsule, ChainSegment, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.joints.{DistanceJoint, Joint, JointLimits, JointMotor, JointSpring, MotorJoint, MouseJoint,
+  PrismaticJoint, RevoluteJoint, SpringJoint, WeldJoint, WheelJoint}
 import sims.geometry.Vector2D
 import sims.solver.{ClassicStep, SoftStep}
 import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
@@ -39,7 +40,7 @@ private[io] object WorldReader:
       for b <- bodies; (awake, time, island) <- sleepStates.remove(b) do b.restoreSleep(awake, time, island)
       // New islands are numbered after the saved ones.
       world.sleepIslands = bodies.map(_.sleepIsland).foldLeft(world.sleepIslands)(math.max)
-      if in.readBoolean() then contacts(in, world)
+      if in.readBoolean() then contacts(in, world, version)
       if version >= 3 then world.restoreEvents(openPairs(in, shapes), openPairs(in, shapes))
       if in.available() != 0 then throw IllegalArgumentException(s"${in.available()} bytes after the saved world")
       world
@@ -73,6 +74,7 @@ private[io] object WorldReader:
         SoftStep(substeps, d(0), d(1), d(2), d(3), d(4), d(5), d(6), d(7), d(8), d(9), d(10), directJoints, gridSide,
           maxPairs)
       case tag => throw IllegalArgumentException(s"unknown solver tag $tag in the saved world")
+    if version >= 5 then world.enableContactEvents = in.readBoolean()
     // Version 6 added sleeping; an earlier world had every body awake and may sleep now.
     if version >= 6 then world.enableSleep = in.readBoolean()
 
@@ -102,6 +104,13 @@ private[io] object WorldReader:
     b.allCentred = in.readBoolean()
     b.fixed = in.readBoolean()
     if version >= 3 then b.bullet = in.readBoolean()
+    if version >= 5 then
+      b.kinematic = in.readBoolean()
+      b.linearDamping = in.readDouble()
+      b.angularDamping = in.readDouble()
+      b.gravityScale = in.readDouble()
+      b._id = in.readInt()
+      b.name = name(in)
     if version >= 6 then
       b.enableSleep = in.readBoolean()
       b.sleepThreshold = in.readDouble()
@@ -132,6 +141,13 @@ private[io] object WorldReader:
         val edge = Edge(Vector2D(in.readDouble(), in.readDouble()), Vector2D(in.readDouble(), in.readDouble()))
         in.readDouble() // its density, always 0
         edge
+      case ChainSegmentShape if version >= 5 =>
+        val (start, end) = (Vector2D(in.readDouble(), in.readDouble()), Vector2D(in.readDouble(), in.readDouble()))
+        def ghost(): Option[Vector2D] = if in.readBoolean() then Some(Vector2D(in.readDouble(), in.readDouble())) else None
+        val previous = ghost()
+        val segment = ChainSegment(start, end, previous, ghost())
+        in.readDouble() // its density, always 0
+        segment
       case HullPolygonShape if version >= 2 =>
         val points = IndexedSeq.fill(in.readInt())(Vector2D(in.readDouble(), in.readDouble()))
         HullPolygon(points, in.readDouble())
@@ -145,12 +161,23 @@ private[io] object WorldReader:
       s.maskBits = in.readInt()
       s.groupIndex = in.readInt()
     if version >= 3 then s.sensor = in.readBoolean()
+    if version >= 5 then s.enableContactEvents = in.readBoolean()
     s
+
+  private def name(in: DataInputStream): Option[String] = if in.readBoolean() then Some(in.readUTF()) else None
+
+  /** A joint's limits, motor and spring as `WorldWriter.parts` wrote them. */
+  private def parts(in: DataInputStream): (Option[JointLimits], Option[JointMotor], Option[JointSpring]) =
+    val limits = if in.readBoolean() then { val lower = in.readDouble(); Some(JointLimits(lower, in.readDouble())) } else None
+    val motor = if in.readBoolean() then { val speed = in.readDouble(); Some(JointMotor(speed, in.readDouble())) } else None
+    val spring = if in.readBoolean() then { val hertz = in.readDouble(); Some(JointSpring(hertz, in.readDouble())) } else None
+    (limits, motor, spring)
 
   private def joint(in: DataInputStream, world: World, bodies: IndexedSeq[Body], version: Int): Joint =
     val tag = in.readByte()
     val node1 = if tag == MouseJointTag then null else bodies(in.readInt())
     val node2 = bodies(in.readInt())
+    if tag == MotorJointTag then return finish(in, world, motorJoint(in, node1, node2), version)
     val anchor1 = Vector2D(in.readDouble(), in.readDouble())
     val anchor2 = Vector2D(in.readDouble(), in.readDouble())
     val placement = Array.fill(6)(in.readDouble())
@@ -171,8 +198,27 @@ private[io] object WorldReader:
         val spring = atOrigin(SpringJoint(node1, anchor1, node2, anchor2, k, length))
         spring.damping = damping
         spring
-      case RevoluteJointTag => atOrigin(RevoluteJoint(node1, node2, anchor1))
-      case PrismaticJointTag => atOrigin(PrismaticJoint(node1, anchor1, node2, anchor2))
+      case RevoluteJointTag =>
+        val revolute = atOrigin(RevoluteJoint(node1, node2, anchor1))
+        if version >= 5 then
+          val (limits, motor, spring) = parts(in)
+          revolute.limits = limits; revolute.motor = motor; revolute.spring = spring
+        revolute
+      case PrismaticJointTag =>
+        val prismatic = atOrigin(PrismaticJoint(node1, anchor1, node2, anchor2))
+        if version >= 5 then
+          val (limits, motor, spring) = parts(in)
+          prismatic.limits = limits; prismatic.motor = motor; prismatic.spring = spring
+        prismatic
+      case WeldJointTag if version >= 5 =>
+        val (linearHertz, angularHertz, dampingRatio) = (in.readDouble(), in.readDouble(), in.readDouble())
+        atOrigin(WeldJoint(node1, node2, anchor1, linearHertz, angularHertz, dampingRatio))
+      case WheelJointTag if version >= 5 =>
+        val axis = Vector2D(in.readDouble(), in.readDouble())
+        val wheel = atOrigin(WheelJoint(node1, node2, anchor1, axis))
+        val (limits, motor, spring) = parts(in)
+        wheel.limits = limits; wheel.motor = motor; wheel.spring = spring
+        wheel
       case MouseJointTag =>
         val maxForce = in.readDouble()
         val mouse = atOrigin(MouseJoint(node2, anchor1, maxForce))
@@ -182,13 +228,35 @@ private[io] object WorldReader:
         mouse.target = Vector2D(in.readDouble(), in.readDouble())
         mouse
       case other => throw IllegalArgumentException(s"unknown joint tag $other in the saved world")
+    finish(in, world, j, version)
+
+  /** A motor joint: its target, limits and correction (it has no anchors). */
+  private def motorJoint(in: DataInputStream, node1: Body, node2: Body): MotorJoint =
+    val d = Array.fill(6)(in.readDouble())
+    MotorJoint(node1, node2, Some(Vector2D(d(0), d(1))), Some(d(2)), d(3), d(4), d(5))
+
+  /** What every joint has after its own settings: the soft step's impulses, `collideConnected`,
+    * and since version 5 its name and break limits.
+    */
+  private def finish(in: DataInputStream, world: World, j: Joint, version: Int): Joint =
     val count = in.readInt()
     val rows = JointConstraint.rowsOf(j)
-    if count != rows then throw IllegalArgumentException(s"$j carries $rows impulses, the saved world has $count")
-    val impulses = Array.fill(count)(in.readDouble())
+    // Before version 5 revolute and prismatic joints had their two rows only (no limits, motor
+    // or spring): the others' impulses are 0.
+    val padded = version < 5 && count == 2 && (j.isInstanceOf[RevoluteJoint] || j.isInstanceOf[PrismaticJoint])
+    if count != rows && !padded then
+      throw IllegalArgumentException(s"$j carries $rows impulses, the saved world has $count")
+    val impulses = new Array[Double](rows)
+    for i <- 0 until count do impulses(i) = in.readDouble()
     // Only a world that stepped with the soft step has impulses; others get no soft step's data.
     if impulses.exists(_ != 0) then world.workspace(classOf[SoftWorkspace], SoftWorkspace()).joints.setImpulses(j, impulses)
     if version >= 2 then j.collideConnected = in.readBoolean()
+    if version >= 5 then
+      j.name = name(in)
+      val breakForce = in.readDouble()
+      val breakTorque = in.readDouble()
+      j.breakForce = breakForce
+      j.breakTorque = breakTorque
     j
 
   /** Open event pairs by shape index, keyed by the loaded shapes (whose join orders keep the
@@ -205,7 +273,7 @@ private[io] object WorldReader:
     PairTracker.Saved(Array.tabulate(count)(i => PairKey.of(first(i), second(i))), first, second)
 
   /** The soft step's committed contacts, keyed by the loaded shapes. */
-  private def contacts(in: DataInputStream, world: World): Unit =
+  private def contacts(in: DataInputStream, world: World, version: Int): Unit =
     val shapes = world.shapes
     val table = Contacts()
     for _ <- 0 until in.readInt() do
@@ -220,6 +288,10 @@ private[io] object WorldReader:
       table.ids(2 * c + 1) = in.readInt()
       table.side(c) = in.readInt()
       val hot = table.offset(c)
-      for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do table.hot(hot + k) = in.readDouble()
+      for k <- 0 until ContactTable.Header do table.hot(hot + k) = in.readDouble()
+      // Before version 5 a point's block had no ImpactGap (its last slot): it stays 0.
+      val saved = if version >= 5 then ContactTable.HotPoint else ContactTable.HotPointBeforeFormat5
+      for p <- 0 until table.pointCount(c); k <- 0 until saved do
+        table.hot(hot + ContactTable.Header + p * ContactTable.HotPoint + k) = in.readDouble()
       for k <- 0 until ContactTable.ColdStride do table.cold(c * ContactTable.ColdStride + k) = in.readDouble()
     world.workspace(classOf[SoftWorkspace], SoftWorkspace()).table.restoreCommitted(table)

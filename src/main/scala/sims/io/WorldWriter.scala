@@ -2,8 +2,9 @@ package sims.io
 
 import java.io.{ByteArrayOutputStream, DataOutputStream}
 import sims.collision.{GridDetector, PairTracker}
-import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
-import sims.dynamics.joints.{DistanceJoint, Joint, JointOrigin, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint}
+import sims.dynamics.{Body, Capsule, ChainSegment, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.joints.{DistanceJoint, Joint, JointLimits, JointMotor, JointOrigin, JointSpring, MotorJoint, MouseJoint,
+  PrismaticJoint, RevoluteJoint, SpringJoint, WeldJoint, WheelJoint}
 import sims.solver.{ClassicStep, SoftStep}
 import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
 import sims.solver.soft.joints.JointConstraint
@@ -59,6 +60,7 @@ private[io] object WorldWriter:
         out.writeDouble(soft.gridSide)
         out.writeInt(soft.maxPairs)
       case other => unsupported("solver", other)
+    out.writeBoolean(world.enableContactEvents)
     out.writeBoolean(world.enableSleep)
 
   private def body(out: DataOutputStream, b: Body): Unit =
@@ -73,6 +75,10 @@ private[io] object WorldWriter:
     out.writeBoolean(b.allCentred)
     out.writeBoolean(b.fixed)
     out.writeBoolean(b.bullet)
+    out.writeBoolean(b.kinematic)
+    for d <- Seq(b.linearDamping, b.angularDamping, b.gravityScale) do out.writeDouble(d)
+    out.writeInt(b.id)
+    name(out, b.name)
     out.writeBoolean(b.enableSleep)
     out.writeDouble(b.sleepThreshold)
     out.writeBoolean(b.isAwake)
@@ -96,6 +102,14 @@ private[io] object WorldWriter:
         out.writeByte(CapsuleShape)
         out.writeDouble(c.halfLength)
         out.writeDouble(c.radius)
+      case c: ChainSegment =>
+        out.writeByte(ChainSegmentShape)
+        for d <- Seq(c.start.x, c.start.y, c.end.x, c.end.y) do out.writeDouble(d)
+        for ghost <- Seq(c.previous, c.next) do
+          out.writeBoolean(ghost.isDefined)
+          for g <- ghost do
+            out.writeDouble(g.x)
+            out.writeDouble(g.y)
       case e: Edge =>
         out.writeByte(EdgeShape)
         for d <- Seq(e.start.x, e.start.y, e.end.x, e.end.y) do out.writeDouble(d)
@@ -113,6 +127,22 @@ private[io] object WorldWriter:
     out.writeInt(s.maskBits)
     out.writeInt(s.groupIndex)
     out.writeBoolean(s.sensor)
+    out.writeBoolean(s.enableContactEvents)
+
+  /** An optional name: whether there is one, then its UTF-8 bytes. */
+  private def name(out: DataOutputStream, name: Option[String]): Unit =
+    out.writeBoolean(name.nonEmpty)
+    name.foreach(out.writeUTF)
+
+  /** A joint's optional limits, motor and spring: each whether it is there, then its numbers. */
+  private def parts(out: DataOutputStream, limits: Option[JointLimits], motor: Option[JointMotor],
+      spring: Option[JointSpring]): Unit =
+    out.writeBoolean(limits.nonEmpty)
+    limits.foreach { l => out.writeDouble(l.lower); out.writeDouble(l.upper) }
+    out.writeBoolean(motor.nonEmpty)
+    motor.foreach { m => out.writeDouble(m.speed); out.writeDouble(m.maxForce) }
+    out.writeBoolean(spring.nonEmpty)
+    spring.foreach { s => out.writeDouble(s.hertz); out.writeDouble(s.dampingRatio) }
 
   private def joint(out: DataOutputStream, world: World, j: Joint, bodyIndex: Map[Body, Int]): Unit =
     def origin(o: JointOrigin): Unit =
@@ -130,8 +160,26 @@ private[io] object WorldWriter:
         out.writeDouble(s.springConstant)
         out.writeDouble(s.initialLength)
         out.writeDouble(s.damping)
-      case r: RevoluteJoint => nodes(RevoluteJointTag, r.origin)
-      case p: PrismaticJoint => nodes(PrismaticJointTag, p.origin)
+      case r: RevoluteJoint =>
+        nodes(RevoluteJointTag, r.origin)
+        parts(out, r.limits, r.motor, r.spring)
+      case p: PrismaticJoint =>
+        nodes(PrismaticJointTag, p.origin)
+        parts(out, p.limits, p.motor, p.spring)
+      case w: WeldJoint =>
+        nodes(WeldJointTag, w.origin)
+        for d <- Seq(w.linearHertz, w.angularHertz, w.dampingRatio) do out.writeDouble(d)
+      case w: WheelJoint =>
+        nodes(WheelJointTag, w.origin)
+        out.writeDouble(w.initialAxis.x)
+        out.writeDouble(w.initialAxis.y)
+        parts(out, w.limits, w.motor, w.spring)
+      case m: MotorJoint =>
+        out.writeByte(MotorJointTag)
+        out.writeInt(bodyIndex(m.node1))
+        out.writeInt(bodyIndex(m.node2))
+        for d <- Seq(m.targetOffset.x, m.targetOffset.y, m.targetAngle, m.maxForce, m.maxTorque, m.correctionFactor) do
+          out.writeDouble(d)
       case m: MouseJoint =>
         out.writeByte(MouseJointTag)
         out.writeInt(bodyIndex(m.node2))
@@ -143,6 +191,9 @@ private[io] object WorldWriter:
     out.writeInt(impulses.length)
     impulses.foreach(out.writeDouble)
     out.writeBoolean(j.collideConnected)
+    name(out, j.name)
+    out.writeDouble(j.breakForce)
+    out.writeDouble(j.breakTorque)
 
   /** The soft step's committed contacts, if the world has stepped with the soft step. */
   private def contacts(out: DataOutputStream, world: World, shapeIndex: Map[Shape, Int]): Unit =

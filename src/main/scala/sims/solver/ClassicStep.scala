@@ -93,14 +93,25 @@ object ClassicStep extends Solver:
     var i = 0
     while i < bodies.length do
       val b = bodies(i)
-      if !b.fixed then
+      if !b.immovable then
         val m = b.mass
-        b.fx += gx * m
-        b.fy += gy * m
+        // Times the gravity scale, 1 unless the user set it: exact, SiMS's sums unchanged.
+        b.fx += gx * m * b.gravityScale
+        b.fy += gy * m * b.gravityScale
         b.vx += (b.fx / m) * h
         b.vy += (b.fy / m) * h
         b.w += (b.tau / b.I) * h
+        if b.damped then damp(b, h)
       i += 1
+
+  /** The body's damping over one step (an extension of SiMS): v / (1 + h linearDamping),
+    * w / (1 + h angularDamping), the implicit form that never reverses a velocity.
+    */
+  private def damp(b: sims.dynamics.Body, h: Double): Unit =
+    val linear = 1 / (1 + h * b.linearDamping)
+    b.vx *= linear
+    b.vy *= linear
+    b.w *= 1 / (1 + h * b.angularDamping)
 
   private def correctVelocities(world: World, h: Double): Unit =
     val contacts = world.workspace(classOf[ContactSolver], ContactSolver())
@@ -126,6 +137,9 @@ object ClassicStep extends Solver:
     * points, from the velocities as they are now).
     */
   private def reportTouching(world: World): Unit =
+    if world.enableContactEvents then reportTouchingPairs(world)
+
+  private def reportTouchingPairs(world: World): Unit =
     val collisions = world.detector.collisions
     val tracker = world.contactTracker
     var i = 0

@@ -97,7 +97,7 @@ final case class SoftStep(
     world.stage = "advanceTime"
     advanceTime(world)
     world.stage = "loadBodies"
-    loadBodies(world, workspace)
+    loadBodies(world, workspace, h)
     if resting(world, workspace) then
       // Every body sleeps (or is fixed), and nothing changed: the step moves nothing, and the
       // contacts, and so the pairs touching, stay as they are.
@@ -128,13 +128,17 @@ final case class SoftStep(
       solve(workspace, useBias = false) // relax
       substep += 1
     world.stage = "applyRestitution"
-    applyRestitution(workspace)
+    applyRestitution(world, workspace, h)
     world.stage = "finish"
     finish(world, workspace)
     if bullets then
       world.stage = "continuous collision"
       bulletsOf(world).sweep(world)
       world.guard("continuous collision", Checked.Positions)
+
+  /** Every parameter by name, e.g. `SoftStep(substeps = 4, contactHertz = 30.0, ...)`. */
+  override def toString: String =
+    productElementNames.zip(productIterator).map((name, value) => s"$name = $value").mkString("SoftStep(", ", ", ")")
 
   /** The soft step reports the contacts that touch itself (see [[sims.solver.soft.ContactTouching]]). */
   override private[sims] def reportsTouching: Boolean = true
@@ -153,9 +157,9 @@ final case class SoftStep(
 
   private def advanceTime(world: World): Unit = world.advanceTime()
 
-  private def loadBodies(world: World, workspace: SoftWorkspace): Unit =
+  private def loadBodies(world: World, workspace: SoftWorkspace, h: Double): Unit =
     val bodies = workspace.bodies
-    bodies.load(world.bodyList)
+    bodies.load(world.bodyList, h)
     if bodies.anyAsleep then wakeJointed(world, bodies)
     workspace.joints.sort(world, bodies, directJoints)
 
@@ -183,7 +187,7 @@ final case class SoftStep(
         j += 1
 
   /** Whether the step has nothing to do: every body asleep or fixed, no fixed body placed by the
-    * user, collision detection on, no body or joint added or removed since the last step that
+    * user, no kinematic body moving, collision detection on, no body or joint added or removed since the last step that
     * collided its pairs, whose contacts are still the committed ones.
     */
   private def resting(world: World, workspace: SoftWorkspace): Boolean =
@@ -192,7 +196,8 @@ final case class SoftStep(
         world.bulletCount > 0 then false
     else
       var i = 0
-      while i < bodies.count && bodies.invMass(i) == 0 && !bodies.bodies(i).movedByUser do i += 1
+      while i < bodies.count && bodies.invMass(i) == 0 && !bodies.bodies(i).movedByUser &&
+          !bodies.bodies(i).movesItself do i += 1
       i == bodies.count
 
   private def findContacts(world: World, workspace: SoftWorkspace): Unit =
@@ -230,9 +235,15 @@ final case class SoftStep(
       val m = bodies.invMass(i)
       if m != 0 then
         val k = i * SoftBodies.Stride
-        state(k + VelocityX) += h * (gx + bodies.substepForceX(i) * m)
-        state(k + VelocityY) += h * (gy + bodies.substepForceY(i) * m)
+        // Times the gravity scale, 1 unless the user set it: exact, the sums unchanged.
+        val scale = bodies.gravityScale(i)
+        state(k + VelocityX) += h * (gx * scale + bodies.substepForceX(i) * m)
+        state(k + VelocityY) += h * (gy * scale + bodies.substepForceY(i) * m)
         state(k + AngularVelocity) += h * bodies.substepTorque(i) * bodies.invI(i)
+        if bodies.anyDamped then
+          state(k + VelocityX) *= bodies.linearDecay(i)
+          state(k + VelocityY) *= bodies.linearDecay(i)
+          state(k + AngularVelocity) *= bodies.angularDecay(i)
       i += 1
     ContactConstraints.addFreeMotion(workspace.table.current, bodies, gx, gy, h)
 
@@ -309,15 +320,21 @@ final case class SoftStep(
         state(k + TurnSin) = turnedS / length
       i += 1
 
-  private def applyRestitution(workspace: SoftWorkspace): Unit =
+  private def applyRestitution(world: World, workspace: SoftWorkspace, h: Double): Unit =
     ContactConstraints.restitution(workspace.table.current, workspace.bodies, restitutionThreshold,
-      Defaults.RestitutionIterations, Defaults.RestitutionTolerance)
+      Defaults.RestitutionIterations, Defaults.RestitutionTolerance, world.gravity.x, world.gravity.y, h)
 
   private def finish(world: World, workspace: SoftWorkspace): Unit =
     workspace.bodies.finish()
+    val joints = workspace.joints.constraints
+    var i = 0
+    while i < joints.length do
+      joints(i).report(workspace.context.inverseH)
+      i += 1
     world.guard("soft step substeps", Checked.Velocities)
     world.guard("soft step substeps", Checked.Positions)
-    ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker)
+    if world.enableContactEvents then
+      ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker)
     workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
     workspace.table.commit()
     workspace.collidedRevision = if world.enableCollisionDetection then world.revision else -1

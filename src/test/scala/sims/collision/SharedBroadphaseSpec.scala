@@ -18,8 +18,8 @@ class SharedBroadphaseSpec extends AnyFunSuite with Matchers:
     */
   private final class Looking(val node1: Body, val node2: Body, probe: AABB) extends Joint with ForceJointLike:
     var seen = Vector.empty[Int]
-    def applyForce(): Unit = seen :+= world.query(probe).size
-    def correctVelocity(h: Double): Unit = seen :+= world.query(probe).size
+    def applyForce(): Unit = seen :+= world.query(probe, sensors = true).size
+    def correctVelocity(h: Double): Unit = seen :+= world.query(probe, sensors = true).size
     def correctPosition(h: Double): Unit = ()
 
   for solver <- Seq[Solver](ClassicStep, SoftStep()) do
@@ -43,7 +43,7 @@ class SharedBroadphaseSpec extends AnyFunSuite with Matchers:
       world += markers
       val looking = Looking(ground, ball, AABB(Vector2D(2, 2), Vector2D(4, 4)))
       world += looking
-      world.query(AABB(Vector2D(2, 2), Vector2D(4, 4))).size shouldBe 2
+      world.query(AABB(Vector2D(2, 2), Vector2D(4, 4)), sensors = true).size shouldBe 2
       for _ <- 1 to 3 do world.step()
       looking.seen.size should be >= 6
       looking.seen.distinct shouldBe Vector(2)

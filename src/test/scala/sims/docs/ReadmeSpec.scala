@@ -5,22 +5,34 @@ import org.scalatest.matchers.should.Matchers
 
 /** The README's usage example, verbatim, and what it claims. */
 class ReadmeSpec extends AnyFunSuite with Matchers:
-  test("the README example runs and the ball rests on the ground") {
-    import sims.dynamics.{Circle, Rectangle, World}
+  test("the README example runs and the stack of five boxes stands at rest") {
+    import sims.dynamics.{Rectangle, World}
     import sims.geometry.Vector2D
+    import sims.solver.SoftStep
 
     val world = World()                         // gravity (0, -9.81), 60 steps per second
-    val ground = Rectangle(10, 0.5, 1).asBody   // half extents 10 m x 0.5 m, density 1 kg/m^2
-    ground.fixed = true
-    val ball = Circle(0.2, 1).asBody            // radius 0.2 m
-    ball.pos = Vector2D(0, 3)
+    world.solver = SoftStep()                   // substeps, soft contacts, warm starting
+    val ground = Rectangle(10, 0.5).asBody      // half extents 10 m x 0.5 m, density 1 kg/m^2
+    ground.fixed = true                         // its top face at y = 0.5
     world += ground
-    world += ball
+    val boxes = for i <- 0 until 5 yield
+      val box = Rectangle(0.5, 0.25).asBody     // a box of 1 m x 0.5 m
+      box.pos = Vector2D(0.02 * i, 0.76 + 0.51 * i)
+      world += box
+      box
     for _ <- 1 to 120 do world.step()           // two simulated seconds
-    println(s"the ball rests at ${ball.pos}")   // on the ground: y about 0.7
+    println(boxes.map(b => f"${b.pos.y}%.2f").mkString(" ")) // the stack stands: 0.75 1.25 1.75 2.24 2.74
 
-    ball.pos.y shouldBe 0.7 +- 0.015
-    ball.pos.x shouldBe 0.0
+    for (b, i) <- boxes.zipWithIndex do
+      b.pos.y shouldBe (0.75 + 0.5 * i) +- 0.015
+      b.pos.x shouldBe (0.02 * i) +- 0.01
+      b.linearVelocity.length should be < 0.01
+    boxes.map(b => f"${b.pos.y}%.2f").mkString(" ") shouldBe "0.75 1.25 1.75 2.24 2.74"
+  }
+
+  test("the README says when to choose the classic step") {
+    val readme = scala.io.Source.fromFile("README.md").mkString
+    readme should include("choose SiMS's own\nstep, `ClassicStep`")
   }
 
   test("the README's code block is the one tested here") {

@@ -90,6 +90,35 @@ class SoftStepSleepSpec extends AnyFunSuite with Matchers:
     ball.pos.y should be > 1.5 + 0.2 - 0.1
   }
 
+  test("a kinematic platform set moving under a sleeping box wakes it and carries it") {
+    val world = World()
+    world.solver = SoftStep()
+    val platform = box(2, 0.25, Vector2D(0, -0.25))
+    platform.kinematic = true
+    world += platform
+    val crate = box(0.5, 0.25, Vector2D(0, 0.25))
+    world += crate
+    settle(world, Seq(crate))
+    platform.linearVelocity = Vector2D(1, 0)
+    for _ <- 1 to 60 do world.step()
+    crate.isAwake shouldBe true
+    platform.pos.x shouldBe 1.0 +- 1e-9
+    // Carried by friction: it moved with the platform, still on it.
+    crate.pos.x should be > 0.9
+    crate.pos.y shouldBe 0.25 +- 0.01
+  }
+
+  test("a kinematic body moving alone keeps moving while everything else sleeps") {
+    val (world, _, boxes) = asleepStack(2)
+    val mover = box(0.2, 0.2, Vector2D(5, 3))
+    mover.kinematic = true
+    mover.linearVelocity = Vector2D(0, 1)
+    world += mover
+    settle(world, boxes)
+    for _ <- 1 to 60 do world.step()
+    mover.pos.y should be > 3.9
+  }
+
   test("a ball far from the sleeping stack wakes nothing") {
     val (world, _, boxes) = asleepStack(3)
     val ball = Circle(0.2, 1).asBody

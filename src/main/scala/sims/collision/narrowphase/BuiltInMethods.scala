@@ -1,8 +1,7 @@
 package sims.collision.narrowphase
 
 import sims.collision.Collision
-import sims.dynamics.{Circle, RoundedSegment, Shape}
-import sims.geometry.ConvexPolygon
+import sims.dynamics.Shape
 
 /** The built-in narrowphase methods (SiMS's contact rules, docs/collisions.md): partial functions for the detector's
   * lists, where users see, reorder or shadow them, each also carrying its [[PairKind]] and a
@@ -24,10 +23,8 @@ private[sims] object BuiltInMethods:
   private def matches(kind: PairKind, pair: (Shape, Shape)): Boolean =
     is(kind.first, pair._1) && is(kind.second, pair._2)
 
-  private def is(kind: ShapeKind, shape: Shape): Boolean = kind match
-    case ShapeKind.Circle => shape.isInstanceOf[Circle]
-    case ShapeKind.Polygon => shape.isInstanceOf[ConvexPolygon]
-    case ShapeKind.Capsule => shape.isInstanceOf[RoundedSegment]
+  // ShapeKind.of is the one place that says which class is which kind.
+  private def is(kind: ShapeKind, shape: Shape): Boolean = ShapeKind.of(shape) == kind
 
   /** The tests, in the order the detector's list starts with: the registry's, by pair kind. */
   val tests: Seq[PartialFunction[(Shape, Shape), Boolean]] =

@@ -50,6 +50,32 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
   /** Relative rotation `node2.rotation - node1.rotation` that the joint keeps: its value at creation. */
   val referenceAngle: Double = node2.rotation - node1.rotation
 
+  /** The range `translation` is kept in (default None: no limit). Under both steps: the classic
+    * step corrects it one-sidedly after the line, in velocity and in position.
+    */
+  var limits: Option[JointLimits] = None
+
+  /** The motor that drives `translationSpeed` (default None; its maxForce in N). Needs the soft step. */
+  var motor: Option[JointMotor] = None
+
+  /** `translation` when the joint was made: the distance from anchor1 to anchor2, m. */
+  val initialTranslation: Double = (anchor2 - anchor1).length
+
+  /** The spring that pulls `translation` back to `initialTranslation` (default None). Needs the
+    * soft step.
+    */
+  var spring: Option[JointSpring] = None
+
+  override private[sims] def softStepFeature: Option[String] =
+    if motor.nonEmpty then Some("a motor") else if spring.nonEmpty then Some("a spring") else super.softStepFeature
+
+  /** How fast the sliding anchor moves along the line, relative to node1, m/s. */
+  def translationSpeed: Double =
+    val u = axis
+    val p2 = connection2
+    val relative = node2.velocityOfPoint(p2) - node1.velocityOfPoint(p2)
+    relative dot u
+
   /** Current world position of the line's anchor on node1. */
   def connection1: Vector2D = point1.position
 
@@ -94,6 +120,10 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     matrix.solve(node1.invMass, node1.invI, node2.invMass, node2.invI, angular1, angular2, lineRight, turnRight)
 
   def correctVelocity(h: Double): Unit =
+    correctLineVelocity()
+    if limits.nonEmpty then correctLimit(limits.get, position = false)
+
+  private def correctLineVelocity(): Unit =
     prepare()
     val b1 = node1
     val b2 = node2
@@ -110,6 +140,42 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     b2.w += (angular2 * matrix.lineImpulse + matrix.turnImpulse) * b2.invI
 
   def correctPosition(h: Double): Unit =
+    correctLinePosition()
+    if limits.nonEmpty then correctLimit(limits.get, position = true)
+
+  /** The limits' correction (an extension of SiMS's joints) along the line u: at or beyond an
+    * end, a velocity that would go further out is stopped (`position` false), or a translation
+    * beyond it is moved back to it (`position` true), one-sidedly, with the row
+    * J = [-u, -b1, u, b2], b1 = (p2 - x1) x u, b2 = r2 x u.
+    */
+  private def correctLimit(range: JointLimits, position: Boolean): Unit =
+    point1.update()
+    point2.update()
+    val u = localAxis.rotate(node1.angle)
+    val reachX = point2.x - node1.x
+    val reachY = point2.y - node1.y
+    val b1 = reachX * u.y - reachY * u.x
+    val b2 = point2.armX * u.y - point2.armY * u.x
+    val k = node1.invMass + node2.invMass + node1.invI * b1 * b1 + node2.invI * b2 * b2
+    if k > 0 then
+      val t = u.x * (point2.x - point1.x) + u.y * (point2.y - point1.y)
+      val lambda =
+        if position then
+          if t < range.lower then (range.lower - t) / k else if t > range.upper then (range.upper - t) / k else 0.0
+        else
+          val speed = u.x * (node2.vx - node1.vx) + u.y * (node2.vy - node1.vy) + b2 * node2.w - b1 * node1.w
+          if (t <= range.lower && speed < 0) || (t >= range.upper && speed > 0) then -speed / k else 0.0
+      if lambda != 0 then
+        if position then
+          node1.displace(-u.x * lambda * node1.invMass, -u.y * lambda * node1.invMass, -b1 * lambda * node1.invI)
+          node2.displace(u.x * lambda * node2.invMass, u.y * lambda * node2.invMass, b2 * lambda * node2.invI)
+        else
+          node1.vx -= u.x * lambda * node1.invMass; node1.vy -= u.y * lambda * node1.invMass
+          node1.w -= b1 * lambda * node1.invI
+          node2.vx += u.x * lambda * node2.invMass; node2.vy += u.y * lambda * node2.invMass
+          node2.w += b2 * lambda * node2.invI
+
+  private def correctLinePosition(): Unit =
     prepare()
     val b1 = node1
     val b2 = node2
@@ -121,4 +187,7 @@ final class PrismaticJoint(val node1: Body, anchor1: Vector2D, val node2: Body, 
     b1.displace(-px * b1.invMass, -py * b1.invMass, -(angular1 * matrix.lineImpulse + matrix.turnImpulse) * b1.invI)
     b2.displace(px * b2.invMass, py * b2.invMass, (angular2 * matrix.lineImpulse + matrix.turnImpulse) * b2.invI)
 
-  override def toString: String = s"PrismaticJoint($node1, $node2, axis = $axis)"
+  override def toString: String =
+    val extras = limits.map(l => s", $l").getOrElse("") + motor.map(m => s", $m").getOrElse("") +
+      spring.map(sp => s", $sp").getOrElse("")
+    s"PrismaticJoint($node1, $node2, axis = $axis$extras)"

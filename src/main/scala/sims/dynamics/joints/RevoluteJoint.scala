@@ -39,6 +39,29 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
   /** The anchors and placements this joint was made from (for saving a world). */
   private[sims] val origin: JointOrigin = JointOrigin(node1, anchor, node2, anchor)
 
+  /** Relative rotation `node2.rotation - node1.rotation` at creation: `angle` is measured from it. */
+  val referenceAngle: Double = node2.rotation - node1.rotation
+
+  /** How far node2 has turned relative to node1 since the joint was made, rad (counter-clockwise). */
+  def angle: Double = node2.angle - node1.angle - referenceAngle
+
+  /** How fast node2 turns relative to node1, rad/s. */
+  def angleSpeed: Double = node2.w - node1.w
+
+  /** The range `angle` is kept in (default None: no limit). Under both steps: the classic step
+    * corrects it one-sidedly after the pin, in velocity and in position.
+    */
+  var limits: Option[JointLimits] = None
+
+  /** The motor that drives `angleSpeed` (default None). Needs the soft step. */
+  var motor: Option[JointMotor] = None
+
+  /** The spring that pulls `angle` back to 0 (default None). Needs the soft step. */
+  var spring: Option[JointSpring] = None
+
+  override private[sims] def softStepFeature: Option[String] =
+    if motor.nonEmpty then Some("a motor") else if spring.nonEmpty then Some("a spring") else super.softStepFeature
+
   /** Current world position of the pin on node1. */
   def connection1: Vector2D = point1.position
 
@@ -59,6 +82,10 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     matrix.setUp(node1.invMass, node1.invI, node2.invMass, node2.invI, a1x, a1y, b1x, b1y, a2x, a2y, b2x, b2y)
 
   def correctVelocity(h: Double): Unit =
+    correctPinVelocity()
+    if limits.nonEmpty then correctLimitVelocity(limits.get)
+
+  private def correctPinVelocity(): Unit =
     point1.update()
     point2.update()
     val b1 = node1
@@ -94,6 +121,37 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
       b2.impulseAt(matrix.solutionX, matrix.solutionY, m2x, m2y)
 
   def correctPosition(h: Double): Unit =
+    correctPin()
+    if limits.nonEmpty then correctLimitPosition(limits.get)
+
+  /** The limits' velocity correction (an extension of SiMS's joints): at or beyond an end, a
+    * relative turn that would go further out is stopped, one-sidedly.
+    */
+  private def correctLimitVelocity(range: JointLimits): Unit =
+    val inverse = node1.invI + node2.invI
+    if inverse > 0 then
+      val relative = node2.w - node1.w
+      val a = angle
+      val stop = if a <= range.lower && relative < 0 then -relative
+        else if a >= range.upper && relative > 0 then -relative
+        else 0.0
+      if stop != 0 then
+        node1.w -= stop / inverse * node1.invI
+        node2.w += stop / inverse * node2.invI
+
+  /** The limits' position correction: an angle beyond an end is turned back to it, both bodies
+    * sharing the turn by their inverse inertias.
+    */
+  private def correctLimitPosition(range: JointLimits): Unit =
+    val inverse = node1.invI + node2.invI
+    if inverse > 0 then
+      val a = angle
+      val turn = if a < range.lower then range.lower - a else if a > range.upper then range.upper - a else 0.0
+      if turn != 0 then
+        node1.displace(0, 0, -turn / inverse * node1.invI)
+        node2.displace(0, 0, turn / inverse * node2.invI)
+
+  private def correctPin(): Unit =
     point1.update()
     point2.update()
     val b1 = node1
@@ -109,4 +167,7 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
     b1.displace(-matrix.solutionX * b1.invMass, -matrix.solutionY * b1.invMass, -turn1 * b1.invI)
     b2.displace(matrix.solutionX * b2.invMass, matrix.solutionY * b2.invMass, turn2 * b2.invI)
 
-  override def toString: String = s"RevoluteJoint($node1, $node2, anchor = $anchor)"
+  override def toString: String =
+    val extras = limits.map(l => s", $l").getOrElse("") + motor.map(m => s", $m").getOrElse("") +
+      spring.map(sp => s", $sp").getOrElse("")
+    s"RevoluteJoint($node1, $node2, anchor = $anchor$extras)"

@@ -53,6 +53,7 @@ private[sims] object ContactConstraints:
         hot(q + TangentMass) = if kTangent > 0 then 1 / kTangent else 0
         hot(q + MaxNormalImpulse) = 0
         hot(q + TotalNormalImpulse) = 0
+        hot(q + ImpactGap) = 0
         val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) + state(sA + AngularVelocity) * rAy
         val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
         hot(q + RelativeVelocity) = dvx * nx + dvy * ny
@@ -133,6 +134,10 @@ private[sims] object ContactConstraints:
         // A substep applies its accumulated impulse in all (warm start, solve, relax): at the
         // end of its relax pass, this is what it applied.
         if !useBias then hot(q + TotalNormalImpulse) += total
+        // The first push's gap: positive when a solve pass pushed (the gap at the start of the
+        // substep it meets in), negative when a relax pass did (its gap after the substep's
+        // positions: it meets in the next substep), 0 when the bodies touched already.
+        if impulse > 0 && hot(q + MaxNormalImpulse) == 0 && s > 0 then hot(q + ImpactGap) = if useBias then s else -s
         if impulse > hot(q + MaxNormalImpulse) then hot(q + MaxNormalImpulse) = impulse
         val px = impulse * nx; val py = impulse * ny
         vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
@@ -177,26 +182,49 @@ private[sims] object ContactConstraints:
     while c < contacts.active do
       val k = contacts.offset(c)
       if hot(k + Restitution) != 0 then
-        val a = contacts.bodyA(c)
-        val b = contacts.bodyB(c)
-        val mA = bodies.invMass(a); val mB = bodies.invMass(b)
-        // The substep's change of each body's velocities by gravity and forces.
-        val dvAx = if mA == 0 then 0.0 else h * (gx + bodies.substepForceX(a) * mA)
-        val dvAy = if mA == 0 then 0.0 else h * (gy + bodies.substepForceY(a) * mA)
-        val dwA = h * bodies.substepTorque(a) * bodies.invI(a)
-        val dvBx = if mB == 0 then 0.0 else h * (gx + bodies.substepForceX(b) * mB)
-        val dvBy = if mB == 0 then 0.0 else h * (gy + bodies.substepForceY(b) * mB)
-        val dwB = h * bodies.substepTorque(b) * bodies.invI(b)
-        val nx = hot(k + NormalX); val ny = hot(k + NormalY)
         var p = 0
         while p < contacts.pointCount(c) do
           val q = k + Header + p * HotPoint
-          if hot(q + MaxNormalImpulse) == 0 then
-            val dvx = dvBx - dwB * hot(q + AnchorBY) - dvAx + dwA * hot(q + AnchorAY)
-            val dvy = dvBy + dwB * hot(q + AnchorBX) - dvAy - dwA * hot(q + AnchorAX)
-            hot(q + RelativeVelocity) += dvx * nx + dvy * ny
+          if hot(q + MaxNormalImpulse) == 0 then hot(q + RelativeVelocity) += freeAlongNormal(contacts, c, q, bodies, gx, gy, h)
           p += 1
       c += 1
+
+  /** The current separation of contact c's point at q, from the bodies' motion since the step began. */
+  private def separationNow(contacts: Contacts, c: Int, q: Int, bodies: SoftBodies): Double =
+    val hot = contacts.hot
+    val state = bodies.state
+    val k = contacts.offset(c)
+    val sA = contacts.bodyA(c) * SoftBodies.Stride
+    val sB = contacts.bodyB(c) * SoftBodies.Stride
+    val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+    val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
+    val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
+    val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
+    val dx = state(sB + ShiftX) - state(sA + ShiftX) + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
+    val dy = state(sB + ShiftY) - state(sA + ShiftY) + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
+    dx * hot(k + NormalX) + dy * hot(k + NormalY) + hot(q + BaseSeparation)
+
+  /** The change of the normal velocity of contact c's point at q over a substep h by gravity
+    * and the forces alone.
+    */
+  private def freeAlongNormal(contacts: Contacts, c: Int, q: Int, bodies: SoftBodies, gx: Double, gy: Double,
+      h: Double): Double =
+    val hot = contacts.hot
+    val k = contacts.offset(c)
+    val a = contacts.bodyA(c)
+    val b = contacts.bodyB(c)
+    val mA = bodies.invMass(a); val mB = bodies.invMass(b)
+    val sA = bodies.gravityScale(a); val sB = bodies.gravityScale(b)
+    val dvAx = if mA == 0 then 0.0 else h * (gx * sA + bodies.substepForceX(a) * mA)
+    val dvAy = if mA == 0 then 0.0 else h * (gy * sA + bodies.substepForceY(a) * mA)
+    val dwA = h * bodies.substepTorque(a) * bodies.invI(a)
+    val dvBx = if mB == 0 then 0.0 else h * (gx * sB + bodies.substepForceX(b) * mB)
+    val dvBy = if mB == 0 then 0.0 else h * (gy * sB + bodies.substepForceY(b) * mB)
+    val dwB = h * bodies.substepTorque(b) * bodies.invI(b)
+    val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+    val dvx = dvBx - dwB * hot(q + AnchorBY) - dvAx + dwA * hot(q + AnchorAY)
+    val dvy = dvBy + dwB * hot(q + AnchorBX) - dvAy - dwA * hot(q + AnchorAX)
+    dvx * nx + dvy * ny
 
   /** Once per step, after the substeps: the points that were approaching faster than
     * `threshold` (see `addFreeMotion`) and pushed during the step bounce, their normal
@@ -214,7 +242,8 @@ private[sims] object ContactConstraints:
     * approach measured within the substeps (after other contacts pushed the bodies, or
     * inflated by warm starting) is no longer J u0: both gained energy (docs/two-solvers.md).
     */
-  def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double, iterations: Int, tolerance: Double): Unit =
+  def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double, iterations: Int, tolerance: Double,
+      gx: Double, gy: Double, h: Double): Unit =
     val hot = contacts.hot
     val state = bodies.state
     var pass = 0
@@ -240,7 +269,26 @@ private[sims] object ContactConstraints:
               val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
               val vn = dvx * nx + dvy * ny
               val accumulated = hot(q + NormalImpulse)
-              val total = math.max(accumulated - hot(q + NormalMass) * (vn + e * hot(q + RelativeVelocity)), 0.0)
+              // The substeps move positions by the velocity at each substep's end: under a
+              // steady pull f per substep along the normal (gravity, forces; f < 0 pulls the
+              // two together) a body moves as it would in continuous time at a speed half an f
+              // behind. A fall meets in the substep whose velocity u is its approach (the one
+              // after a relax pass's first push: u = approach + f) at a fraction phi of that
+              // substep's travel (the gap then over h |u|): the motion's own impact speed is
+              // c = -u - f (phi - 1/2). The bounce sends it back at e c from the surface, or at
+              // what is left of e c at the gap g it turned at (a push at the step's last relax
+              // pass), plus half an f for the rise's own lag: vn = sqrt((e c)^2 + 2 f g / h) - f / 2.
+              // Bouncing at -e u instead lost up to a substep's travel of height at every
+              // bounce (1.8% of a 1 m drop at e = 1); without gravity and forces it is -e u.
+              val free = freeAlongNormal(contacts, c, q, bodies, gx, gy, h)
+              val recorded = hot(q + ImpactGap)
+              val impact = if recorded < 0 then hot(q + RelativeVelocity) + free else hot(q + RelativeVelocity)
+              val phi = if impact < 0 then math.min(1.0, math.abs(recorded) / (-impact * h)) else 0.0
+              val speed = -impact - free * (phi - 0.5)
+              val gap = math.max(0.0, separationNow(contacts, c, q, bodies))
+              val launch = math.sqrt(math.max(0.0, e * e * speed * speed + 2 * free / h * gap)) - 0.5 * free
+              val target = -launch
+              val total = math.max(accumulated - hot(q + NormalMass) * (vn + target), 0.0)
               val impulse = total - accumulated
               if impulse != 0 then
                 // How far the point was from its target (or from where the clamp stops it).

@@ -166,12 +166,14 @@ private[sims] final class ContactFinder:
           bodies.wakeIsland(bodies.bodies(b).sleepIsland)
       c += 1
 
-  /** Whether body i wakes a sleeping body it touches: it moves (awake and not fixed), or it is a
-    * fixed body the user placed since the last step.
+  /** Whether body i wakes a sleeping body it touches: it moves (awake and not fixed, or
+    * kinematic with a velocity), or it is a fixed body the user placed since the last step.
     */
   private def wakes(i: Int): Boolean =
     if bodies.invMass(i) != 0 then true
-    else !bodies.asleep(i) && bodies.bodies(i).movedByUser
+    else
+      val body = bodies.bodies(i)
+      body.movesItself || (!bodies.asleep(i) && body.movedByUser)
 
   /** Whether shapes a and b touch as the soft step counts it: their manifold has a point. */
   private def touches(a: Shape, b: Shape, speculativeDistance: Double, linearSlop: Double): Boolean =
@@ -335,8 +337,8 @@ private[sims] final class ContactFinder:
       val s = ContactFinder.sine(turnA)
       val relativeX = c * dx + s * dy - old.cold(k + CachedRelativeX)
       val relativeY = -s * dx + c * dy - old.cold(k + CachedRelativeY)
-      val extentA = if bodies.invMass(a) == 0 then 0.0 else bodies.bodies(a).extent
-      val extentB = if bodies.invMass(b) == 0 then 0.0 else bodies.bodies(b).extent
+      val extentA = if bodies.bodies(a).fixed then 0.0 else bodies.bodies(a).extent
+      val extentB = if bodies.bodies(b).fixed then 0.0 else bodies.bodies(b).extent
       val shift = math.sqrt(relativeX * relativeX + relativeY * relativeY)
       shift + math.max(extentA, extentB) * math.abs(ContactFinder.sine(turnB - turnA)) < persistence
 

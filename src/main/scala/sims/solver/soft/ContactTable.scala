@@ -86,7 +86,10 @@ private[sims] object ContactTable:
   inline val MaxNormalImpulse = 9 // the largest normal impulse applied in one solve
   inline val RelativeVelocity = 10 // the normal approach: at the start, plus gravity and forces until the point pushed
   inline val TotalNormalImpulse = 11 // the normal impulse applied over the step: its substeps and restitution
-  inline val HotPoint = 12
+  inline val ImpactGap = 12 // the separation when the point first pushed this step (0 if it was closed)
+  inline val HotPoint = 13
+  /** A point's hot block before save format 5 (no ImpactGap). */
+  inline val HotPointBeforeFormat5 = 12
 
   // A contact's cold block in `Contacts.cold`, at `c * ColdStride`: what the collision stage
   // keeps for the next step. The bodies' placements when the manifold was computed: both

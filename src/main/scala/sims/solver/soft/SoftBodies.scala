@@ -35,15 +35,31 @@ private[sims] final class SoftBodies:
   /** Whether any body is asleep. */
   var anyAsleep: Boolean = false
 
-  /** Takes the state of the world's bodies at the start of a step. */
-  def load(list: ArrayBuffer[Body]): Unit =
+  /** Per body: the part of gravity acting on it, and the factors its velocities are multiplied
+    * by in each substep (1 / (1 + h damping); 1 without damping).
+    */
+  var gravityScale, linearDecay, angularDecay: Array[Double] = new Array[Double](0)
+  /** Whether some body has a damping (the substeps then apply the decays). */
+  var anyDamped: Boolean = false
+
+  /** Takes the state of the world's bodies at the start of a step whose substeps last `h`. */
+  def load(list: ArrayBuffer[Body], h: Double): Unit =
     count = list.length
     if bodies.length < count then grow(math.max(count, 2 * bodies.length))
     anyAsleep = false
+    anyDamped = false
     var i = 0
     while i < count do
       val b = list(i)
       bodies(i) = b
+      gravityScale(i) = b.gravityScale
+      if b.damped then
+        anyDamped = true
+        linearDecay(i) = 1 / (1 + h * b.linearDamping)
+        angularDecay(i) = 1 / (1 + h * b.angularDamping)
+      else
+        linearDecay(i) = 1
+        angularDecay(i) = 1
       val k = i * Stride
       state(k + VelocityX) = b.vx; state(k + VelocityY) = b.vy; state(k + AngularVelocity) = b.w
       state(k + ShiftX) = 0; state(k + ShiftY) = 0; state(k + Turn) = 0
@@ -139,6 +155,8 @@ private[sims] final class SoftBodies:
     substepForceX = new Array[Double](capacity); substepForceY = new Array[Double](capacity)
     substepTorque = new Array[Double](capacity)
     asleep = new Array[Boolean](capacity)
+    gravityScale = new Array[Double](capacity)
+    linearDecay = new Array[Double](capacity); angularDecay = new Array[Double](capacity)
 
 /** The layout of `SoftBodies.state`: body i's values start at `i * Stride`, at these offsets.
   * This is the one place that names them; every reader and writer uses the names.

@@ -77,6 +77,10 @@ private[sims] final class DistanceConstraint(distanceJoint: DistanceJoint) exten
     apply(bodies, lambda)
 
   /** Applies the impulse `lambda` along the axis: -u to body 1, +u to body 2, at their points. */
+  override def report(inverseH: Double): Unit =
+    distanceJoint.reactionX = axisX * impulse(0) * inverseH
+    distanceJoint.reactionY = axisY * impulse(0) * inverseH
+
   private def apply(bodies: SoftBodies, lambda: Double): Unit =
     val px = axisX * lambda
     val py = axisY * lambda

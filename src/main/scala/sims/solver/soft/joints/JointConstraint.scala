@@ -1,6 +1,7 @@
 package sims.solver.soft.joints
 
-import sims.dynamics.joints.{DistanceJoint, ForceJoint, Joint, MouseJoint, PrismaticJoint, RevoluteJoint}
+import sims.dynamics.joints.{DistanceJoint, ForceJoint, Joint, MotorJoint, MouseJoint, PrismaticJoint, RevoluteJoint,
+  WeldJoint, WheelJoint}
 import sims.solver.soft.SoftContext
 
 /** A joint as the soft step solves it (see docs/two-solvers.md): the joint says what is
@@ -28,6 +29,17 @@ private[sims] abstract class JointConstraint(val joint: Joint, rows: Int):
   /** The constraint's rows at the current substep, for the direct solver. */
   def rowsAt(context: SoftContext, rows: JointRows): Unit = ()
 
+  /** The part of the constraint the direct solver of joint trees does not solve (a joint's
+    * limits, motor, spring), one pass of it; `solve` runs it too. Nothing by default.
+    */
+  def solveAxial(context: SoftContext, useBias: Boolean): Unit = ()
+
+  /** Sets the joint's reaction force and torque from the impulses accumulated in the step
+    * (each substep applies them whole: impulse per substep times 1 / substep, `inverseH`).
+    * Nothing by default (a user's joint's load is not known).
+    */
+  def report(inverseH: Double): Unit = ()
+
   /** Applies the impulses accumulated so far. */
   def warmStart(context: SoftContext): Unit
 
@@ -47,6 +59,9 @@ private[sims] object JointConstraint:
     case j: RevoluteJoint => RevoluteConstraint(j)
     case j: PrismaticJoint => PrismaticConstraint(j)
     case j: MouseJoint => MouseConstraint(j)
+    case j: WeldJoint => WeldConstraint(j)
+    case j: WheelJoint => WheelConstraint(j)
+    case j: MotorJoint => MotorConstraint(j)
     case _: ForceJoint => null
     case j => ClassicConstraint(j)
 

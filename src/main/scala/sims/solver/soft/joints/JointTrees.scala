@@ -230,7 +230,13 @@ private[sims] final class JointTrees:
   def solve(context: SoftContext, useBias: Boolean): Unit =
     if direct.nonEmpty then
       val state = context.bodies.state
+      // The rows the trees leave to Gauss-Seidel (limits, motors, springs) first, as a joint
+      // solved iteratively does before its own point constraint.
       var t = 0
+      while t < direct.length do
+        direct(t).solveAxial(context, useBias)
+        t += 1
+      t = 0
       while t < direct.length do
         direct(t).rowsAt(context, rows)
         System.arraycopy(rows.jacobian1, 0, jacobian1, 6 * t, 6)

@@ -1,83 +1,88 @@
 package sims.solver.soft.joints
 
-import sims.dynamics.joints.{PinMatrix, RevoluteJoint}
-import sims.solver.soft.SoftContext
+import sims.dynamics.joints.RevoluteJoint
+import sims.solver.soft.{SoftBodies, SoftContext, Softness}
 import sims.solver.soft.SoftBodies.*
 
-/** The revolute joint under the soft step: the point constraint of [[RevoluteJoint]],
-  *   C = p2 - p1 (the pin's points: their arms at the start of the step turned by each body's
-  *       rotation since),
-  *   Cdot = v2 + w2 x r2 - v1 - w1 x r1, K = (1/m1 + 1/m2) E + the arms' terms (2 x 2),
-  * with Cdot, K and the impulses taken at the middle of p1 and p2, solved as a soft constraint:
-  * lambda = -massScale K^-1 (Cdot + biasRate C) - impulseScale lambdaAcc (relax pass: the rigid
-  * lambda = -K^-1 Cdot). Impulses at two points an open pin apart would form a couple and change
-  * the angular momentum (measured 0.4% over two seconds in a free pair); at the middle they do not.
+/** The revolute joint under the soft step: its pin ([[SoftPin]], impulses 0 and 1; in a joint
+  * tree the direct solver's two rows), and, when the joint has them, the rows on the relative
+  * turn theta = theta2 - theta1 - theta0 (Cdot = w2 - w1, effective mass 1 / (1/I1 + 1/I2)),
+  * solved before the pin in every pass as Box2D v3 does: the spring (impulse 2), the motor
+  * (impulse 3, at most maxForce h per substep) and the limits' lower and upper ends (impulses 4
+  * and 5, one-sided; see [[AxisRows]]).
   */
-private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends JointConstraint(revolute, 2):
-  private val point1 = revolute.attachment1.arm()
-  private val point2 = revolute.attachment2.arm()
-  private val pin = SoftAnchors()
-  private val matrix = PinMatrix()
-  // Set by `measure`: the pin's error C = p2 - p1, and the arms from each centre to the middle
-  // of p1 and p2, where both impulses act.
-  private var errorX, errorY, arm1X, arm1Y, arm2X, arm2Y = 0.0
+private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends JointConstraint(revolute, 6):
+  private val pin = SoftPin(revolute.attachment1.arm(), revolute.attachment2.arm())
+  private val springSoftness = Softness()
+  // Set by `prepare`: whether the joint has turn rows this step, their effective mass, the
+  // motor's largest impulse per substep.
+  private var turning = false
+  private var axialMass, maxMotorImpulse = 0.0
 
   def prepare(context: SoftContext): Unit =
-    point1.update()
-    point2.update()
-    pin.start(context.bodies, revolute.node1.index, revolute.node2.index, point1.armX, point1.armY, point2.armX,
-      point2.armY)
-
-  private def measure(state: Array[Double]): Unit =
-    pin.measure(state)
-    errorX = pin.centresX + pin.arm2X - pin.arm1X
-    errorY = pin.centresY + pin.arm2Y - pin.arm1Y
-    // The middle is p1 + C / 2 from body 1's centre, p2 - C / 2 from body 2's.
-    arm1X = pin.arm1X + 0.5 * errorX; arm1Y = pin.arm1Y + 0.5 * errorY
-    arm2X = pin.arm2X - 0.5 * errorX; arm2Y = pin.arm2Y - 0.5 * errorY
+    val bodies = context.bodies
+    val i1 = revolute.node1.index
+    val i2 = revolute.node2.index
+    pin.prepare(bodies, i1, i2)
+    turning = revolute.limits.nonEmpty || revolute.motor.nonEmpty || revolute.spring.nonEmpty
+    // A part the joint no longer has carries no impulse into the step.
+    if revolute.spring.isEmpty then impulse(2) = 0
+    if revolute.motor.isEmpty then impulse(3) = 0
+    if revolute.limits.isEmpty then { impulse(4) = 0; impulse(5) = 0 }
+    if turning then
+      val inverse = bodies.invI(i1) + bodies.invI(i2)
+      axialMass = if inverse > 0 then 1 / inverse else 0
+      revolute.spring.foreach(s => springSoftness.set(s.hertz, s.dampingRatio, context.h))
+      maxMotorImpulse = revolute.motor.fold(0.0)(_.maxForce * context.h)
 
   override def directRows: Int = 2
 
-  override def rowsAt(context: SoftContext, rows: JointRows): Unit =
-    measure(context.bodies.state)
-    rows.count = 2
-    rows.set(0, -1, 0, arm1Y, 1, 0, -arm2Y, errorX)
-    rows.set(1, 0, -1, -arm1X, 0, 1, arm2X, errorY)
+  override def rowsAt(context: SoftContext, rows: JointRows): Unit = pin.rowsAt(context, rows)
 
   def warmStart(context: SoftContext): Unit =
-    val bodies = context.bodies
-    measure(bodies.state)
-    bodies.applyImpulse(pin.index1, -impulse(0), -impulse(1), arm1X, arm1Y)
-    bodies.applyImpulse(pin.index2, impulse(0), impulse(1), arm2X, arm2Y)
+    if turning then turn(context.bodies, impulse(2) + impulse(3) + impulse(4) - impulse(5))
+    pin.warmStart(context, impulse)
 
   def solve(context: SoftContext, useBias: Boolean): Unit =
-    val bodies = context.bodies
+    solveAxial(context, useBias)
+    pin.solve(context, useBias, impulse)
+
+  override def solveAxial(context: SoftContext, useBias: Boolean): Unit =
+    if turning then
+      val bodies = context.bodies
+      val state = bodies.state
+      val s1 = pin.index1 * Stride
+      val s2 = pin.index2 * Stride
+      def cdot = state(s2 + AngularVelocity) - state(s1 + AngularVelocity)
+      def theta = bodies.angle(pin.index2) - bodies.angle(pin.index1) - revolute.referenceAngle
+      if revolute.spring.nonEmpty then
+        val next = AxisRows.spring(axialMass, cdot, theta, springSoftness, impulse(2))
+        turn(bodies, next - impulse(2))
+        impulse(2) = next
+      revolute.motor.foreach { m =>
+        val next = AxisRows.motor(axialMass, cdot, m.speed, maxMotorImpulse, impulse(3))
+        turn(bodies, next - impulse(3))
+        impulse(3) = next
+      }
+      revolute.limits.foreach { range =>
+        val lower = AxisRows.end(axialMass, cdot, theta - range.lower, useBias, context.inverseH,
+          context.jointSoftness, impulse(4))
+        turn(bodies, lower - impulse(4))
+        impulse(4) = lower
+        // The upper end's row is -theta: its gap upper - theta, its speed -Cdot, impulse reversed.
+        val upper = AxisRows.end(axialMass, -cdot, range.upper - theta, useBias, context.inverseH,
+          context.jointSoftness, impulse(5))
+        turn(bodies, impulse(5) - upper)
+        impulse(5) = upper
+      }
+
+  /** The turn impulse `lambda` on body 2, its opposite on body 1. */
+  private def turn(bodies: SoftBodies, lambda: Double): Unit =
     val state = bodies.state
-    measure(state)
-    val s1 = pin.index1 * Stride
-    val s2 = pin.index2 * Stride
-    val cdotX = state(s2 + VelocityX) - state(s2 + AngularVelocity) * arm2Y - state(s1 + VelocityX) +
-      state(s1 + AngularVelocity) * arm1Y
-    val cdotY = state(s2 + VelocityY) + state(s2 + AngularVelocity) * arm2X - state(s1 + VelocityY) -
-      state(s1 + AngularVelocity) * arm1X
-    var rightX = cdotX
-    var rightY = cdotY
-    var massScale = 1.0
-    var impulseScale = 0.0
-    if useBias then
-      val softness = context.jointSoftness
-      rightX += softness.biasRate * errorX
-      rightY += softness.biasRate * errorY
-      massScale = softness.massScale
-      impulseScale = softness.impulseScale
-    val i1 = pin.index1
-    val i2 = pin.index2
-    val determinant = matrix.setUp(bodies.invMass(i1), bodies.invI(i1), bodies.invMass(i2), bodies.invI(i2),
-      arm1X, arm1Y, arm1X, arm1Y, arm2X, arm2Y, arm2X, arm2Y)
-    matrix.solve(determinant, rightX, rightY)
-    val impulseX = -massScale * matrix.solutionX - impulseScale * impulse(0)
-    val impulseY = -massScale * matrix.solutionY - impulseScale * impulse(1)
-    impulse(0) += impulseX
-    impulse(1) += impulseY
-    bodies.applyImpulse(pin.index1, -impulseX, -impulseY, arm1X, arm1Y)
-    bodies.applyImpulse(pin.index2, impulseX, impulseY, arm2X, arm2Y)
+    state(pin.index1 * Stride + AngularVelocity) -= bodies.invI(pin.index1) * lambda
+    state(pin.index2 * Stride + AngularVelocity) += bodies.invI(pin.index2) * lambda
+
+  override def report(inverseH: Double): Unit =
+    revolute.reactionX = impulse(0) * inverseH
+    revolute.reactionY = impulse(1) * inverseH
+    revolute.reactionTurn = (impulse(2) + impulse(3) + impulse(4) - impulse(5)) * inverseH

@@ -1,0 +1,41 @@
+package sims.solver.soft.joints
+
+import sims.solver.soft.Softness
+
+/** The one-dimensional rows every joint with a coordinate shares (an angle for a revolute
+  * joint, a translation for a prismatic or wheel joint): a spring, a motor and the two ends of
+  * a range, as Box2D v3 solves them. Each takes the row's effective mass m = 1 / (J M^-1 J^T),
+  * its velocity Cdot = J v and what it accumulated so far, and returns the new accumulated
+  * impulse; the caller applies the difference along J.
+  */
+private[sims] object AxisRows:
+  /** A soft spring pulling the coordinate's error `c` to 0:
+    * lambda += -massScale m (Cdot + biasRate c) - impulseScale lambda.
+    */
+  def spring(mass: Double, cdot: Double, c: Double, softness: Softness, accumulated: Double): Double =
+    accumulated - softness.massScale * mass * (cdot + softness.biasRate * c) - softness.impulseScale * accumulated
+
+  /** A motor driving Cdot to `speed` with an accumulated impulse of at most `maxImpulse` either
+    * way: lambda = clamp(lambda - m (Cdot - speed)).
+    */
+  def motor(mass: Double, cdot: Double, speed: Double, maxImpulse: Double, accumulated: Double): Double =
+    val next = accumulated - mass * (cdot - speed)
+    math.max(-maxImpulse, math.min(maxImpulse, next))
+
+  /** One end of a range, a one-sided row whose gap `c` must stay at least 0 (pushing only,
+    * lambda >= 0): speculative while the gap is open (the bias c / h lets it close within the
+    * substep and no further), soft with the joints' softness (solve pass) or rigid without bias
+    * (relax pass) once it is closed.
+    */
+  def end(mass: Double, cdot: Double, c: Double, useBias: Boolean, inverseH: Double, jointSoftness: Softness,
+      accumulated: Double): Double =
+    var bias = 0.0
+    var massScale = 1.0
+    var impulseScale = 0.0
+    if c > 0 then bias = c * inverseH
+    else if useBias then
+      bias = jointSoftness.biasRate * c
+      massScale = jointSoftness.massScale
+      impulseScale = jointSoftness.impulseScale
+    val next = accumulated - massScale * mass * (cdot + bias) - impulseScale * accumulated
+    math.max(next, 0.0)
