@@ -323,7 +323,7 @@ lazy val playground = (project in file("playground"))
   * controls and mouse, and its fingerprints against the JVM's. Canceled, and counted as skipped
   * by .ci/run, where Chromium is not installed.
   */
-lazy val browserBench = taskKey[Unit]("runs the browser benchmark page in headless Chromium; writes docs/performance.md's Browser section")
+lazy val browserBench = taskKey[Unit]("runs the browser benchmark page in headless Chromium; writes the Browser section of docs/src/performance.md (then ./sbt bookRender)")
 
 lazy val browserTests = (project in file("playground/browser-tests"))
   .dependsOn(scenes % "test->test")
@@ -338,7 +338,7 @@ lazy val browserTests = (project in file("playground/browser-tests"))
     Test / parallelExecution := false,
     browserBench := Def.taskDyn {
       val site = (benchPage / staticSite).value
-      val document = (LocalRootProject / baseDirectory).value / "docs" / "performance.md"
+      val document = (LocalRootProject / baseDirectory).value / "docs" / "src" / "performance.md"
       (Test / runMain).toTask(s" sims.playground.BrowserBench $site $document")
     }.value
   )
@@ -346,7 +346,7 @@ lazy val browserTests = (project in file("playground/browser-tests"))
 /** The browser benchmark page (bench/browser/site): the bench scenes with SiMS (this bundle) and
   * with planck, matter-js and Rapier, installed from npm by `staticSite` (bench/browser's
   * package.json and package-lock.json) into the site folder under target/. Run it with
-  * `./sbt browserTests/browserBench`, which writes the table into docs/performance.md.
+  * `./sbt browserTests/browserBench`, which writes the table into docs/src/performance.md.
   */
 lazy val benchPage = (project in file("bench/browser"))
   .enablePlugins(ScalaJSPlugin)

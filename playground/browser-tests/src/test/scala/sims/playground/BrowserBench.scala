@@ -7,7 +7,7 @@ import org.openqa.selenium.support.ui.WebDriverWait
 import scala.jdk.CollectionConverters.*
 
 /** Runs the browser benchmark page (`benchPage/staticSite`) in headless Chromium and writes its
-  * table into the "Browser" section of docs/performance.md. Arguments: the page's folder and
+  * table into the "Browser" section of docs/src/performance.md. Arguments: the page's folder and
   * the performance document. Run with `./sbt browserTests/browserBench`.
   */
 object BrowserBench:
@@ -15,7 +15,7 @@ object BrowserBench:
   final case class Row(scene: String, engine: String, millis: Double, ok: Boolean, detail: String)
 
   def main(args: Array[String]): Unit =
-    require(args.length == 2, "arguments: the bench page's folder and docs/performance.md")
+    require(args.length == 2, "arguments: the bench page's folder and docs/src/performance.md")
     require(Chromium.installed, "Chromium is not installed (apt-get install chromium chromium-driver)")
     val chromium = Chromium.open(File(args(0)))
     try
@@ -67,6 +67,7 @@ object BrowserBench:
     val ratios = s"| scene | ${peers.map(p => s"$p / SiMS ClassicStep").mkString(" | ")} |\n|---|${peers.map(_ => "---:").mkString("|")}|\n" +
       scenes.map(s => s"| $s | ${peers.map(ratio(s, _)).mkString(" | ")} |").mkString("\n")
     val sanity = rows.map(r => s"| ${r.scene} | ${r.engine} | ${if r.ok then "ok" else "failed"} | ${r.detail} |").mkString("\n")
+    // The tables go in after stripMargin, which would take the pipe off the start of their rows.
     s"""## Browser
        |
        |The bench scenes in headless Chromium (`./sbt browserTests/browserBench`, which builds the
@@ -82,15 +83,15 @@ object BrowserBench:
        |
        |Milliseconds per step:
        |
-       |$header$body
+       |@times@
        |
        |Each peer's time over SiMS ClassicStep's (above 1: SiMS is faster):
        |
-       |$ratios
+       |@ratios@
        |
        |Sanity after the run:
        |
        || scene | engine | sanity | measured |
        ||---|---|---|---|
-       |$sanity
-       |""".stripMargin
+       |@sanity@
+       |""".stripMargin.replace("@times@", header + body).replace("@ratios@", ratios).replace("@sanity@", sanity)
