@@ -13,8 +13,8 @@ import sims.solver.{ClassicStep, Solver}
   * and runs each step as a transaction (see `step`). What one step does is its `solver`'s:
   * [[sims.solver.ClassicStep]] (SiMS 1.2's step) unless another is chosen. Its queries
   * ([[WorldQueries]]), its contact and sensor events ([[WorldEvents]]), the guard a solver calls
-  * after each stage ([[StepGuard]]) and the solvers' own data ([[SolverWorkspaces]]) each have a
-  * file of their own.
+  * after each stage ([[StepGuard]]), the solvers' own data ([[SolverWorkspaces]]), sleeping
+  * ([[WorldSleep]]) and the joints that break ([[JointBreaking]]) each have a file of their own.
   *
   * The collision detector is made by `makeDetector` when the world is created, a
   * [[sims.collision.GridDetector]] unless another is given: `World(MyDetector(_))`. (The
@@ -22,7 +22,7 @@ import sims.solver.{ClassicStep, Solver}
   * builds and drops a grid detector first.)
   */
 class World(makeDetector: World => Detector = GridDetector(_))
-    extends WorldQueries, WorldEvents, StepGuard, SolverWorkspaces:
+    extends WorldQueries, WorldEvents, StepGuard, SolverWorkspaces, WorldSleep, JointBreaking:
   private var _timeStep = Defaults.TimeStep
   private var _iterations = Defaults.Iterations
   private var _gravity = Defaults.Gravity
@@ -49,56 +49,6 @@ class World(makeDetector: World => Detector = GridDetector(_))
 
   /** Whether phase 6 (position correction) runs. */
   var enablePositionCorrection: Boolean = true
-
-  private var _enableSleep = true
-  /** The last sleeping island's number (see `Body.isAwake`). */
-  private[sims] var sleepIslands: Long = 0
-  /** Counts the changes a sleeping world must see: bodies and joints added or removed, fixed
-    * bodies moved by the user. A soft step in which every body sleeps skips its collision
-    * stage only while the count is what it was at the last full step.
-    */
-  private[sims] var revision: Long = 0
-
-  /** Whether bodies may fall asleep (default true): islands of touching or jointed bodies
-    * that have rested for `Defaults.TimeToSleep` stop being simulated until something wakes
-    * them (see `Body.isAwake` and docs/two-solvers.md, Sleeping). Only the soft step puts bodies to sleep.
-    * Turning it off wakes every body.
-    */
-  def enableSleep: Boolean = _enableSleep
-
-  /** Lets islands fall asleep, or wakes every body and keeps them awake. */
-  def enableSleep_=(value: Boolean): Unit =
-    _enableSleep = value
-    if !value then wakeAll()
-
-  /** Number of bodies awake (fixed bodies count as awake). */
-  def awakeBodyCount: Int = bodyBuffer.count(_.isAwake)
-
-  /** A new sleeping island's number. */
-  private[sims] def newSleepIsland(): Long =
-    sleepIslands += 1
-    sleepIslands
-
-  /** Wakes every body asleep in `island`. */
-  private[sims] def wakeIsland(island: Long): Unit =
-    var i = 0
-    while i < bodyBuffer.length do
-      val b = bodyBuffer(i)
-      if !b.isAwake && b.sleepIsland == island then b.wakeAlone()
-      i += 1
-
-  /** Wakes every body. */
-  private[sims] def wakeAll(): Unit =
-    var i = 0
-    while i < bodyBuffer.length do
-      bodyBuffer(i).wakeAlone()
-      i += 1
-
-  /** A fixed body was placed by the user: the next soft step wakes what sleeps on it. */
-  private[sims] def fixedBodyMoved(): Unit = revision += 1
-
-  /** A shape's contact-event switch changed: the next step looks at every pair again. */
-  private[sims] def eventSwitchChanged(): Unit = revision += 1
 
   /** What `step()` runs (default [[sims.solver.ClassicStep]]); may be switched at any time. */
   def solver: Solver = _solver
@@ -243,59 +193,15 @@ class World(makeDetector: World => Detector = GridDetector(_))
     if i >= 0 then removeJointAt(i)
     this
 
-  private def removeJointAt(i: Int): Unit =
+  private[dynamics] def removeJointAt(i: Int): Unit =
     val joint = jointBuffer.remove(i)
     joint.node1.wake(); joint.node2.wake()
     revision += 1
     joint.world = null
     if !joint.collideConnected then joint.keepApart(false)
 
-  /** The joints that broke in the last step (their reaction exceeded `breakForce` or
-    * `breakTorque`), removed from the world, in world order.
-    */
-  def jointBreaks: IndexedSeq[JointBreak] = breaks.toIndexedSeq
-
-  private val breaks = ArrayBuffer.empty[JointBreak]
-  // Where each broken joint was in the list, to put it back if the step fails.
-  private val brokenAt = ArrayBuffer.empty[Int]
-
-  /** Removes the joints whose reaction exceeds their break limits, recording each break. */
-  private def breakJoints(): Unit =
-    breaks.clear()
-    brokenAt.clear()
-    var i = 0
-    var removed = 0
-    while i < jointBuffer.length do
-      val j = jointBuffer(i)
-      if j.overloaded then
-        breaks += JointBreak(j, j.reactionForce, j.reactionTorque)
-        brokenAt += i + removed
-        removeJointAt(i)
-        removed += 1
-      else i += 1
-
-  /** Puts the joints broken in the failed step back where they were. */
-  private def unbreakJoints(): Unit =
-    for (b, at) <- breaks.zip(brokenAt) do
-      jointBuffer.insert(at, b.joint)
-      b.joint.world = this
-      if !b.joint.collideConnected then b.joint.keepApart(true)
-    breaks.clear()
-    brokenAt.clear()
-
-  // The ids and names of the bodies and joints.
-  private val bodyIds = WorldIds()
-
-  /** The body of this world with that `id` (see `Body.id`), if there is one: in a loaded world,
-    * the body that had it when the world was saved.
-    */
-  def bodyById(id: Int): Option[Body] = bodyIds.body(id).filter(_.world eq this)
-
-  /** The first body of this world (in world order) with that `name`, if any. */
-  def bodyNamed(name: String): Option[Body] = bodyBuffer.find(_.name.contains(name))
-
-  /** The first joint of this world (in world order) with that `name`, if any. */
-  def jointNamed(name: String): Option[Joint] = jointBuffer.find(_.name.contains(name))
+  // The ids of the bodies (see `bodyById`).
+  private[dynamics] val bodyIds = WorldIds()
 
   /** Counts the sensors and the bullet of a body joining (`sign` 1) or leaving (-1). */
   private def countFlags(body: Body, sign: Int): Unit =

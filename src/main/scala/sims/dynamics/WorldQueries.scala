@@ -2,15 +2,27 @@ package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
 import sims.collision.{RayHit, ShapeQueries}
+import sims.dynamics.joints.Joint
 import sims.geometry.{AABB, Vector2D}
 
-/** A world's queries: ray casts and box and point queries over its shapes, through the world's
-  * broadphase (see [[sims.collision.ShapeQueries]]), which looks at the shapes near the ray or
-  * box only. Every query skips sensors unless asked for them with `sensors = true` (a sensor is
+/** A world's queries: its bodies and joints by id and name, and ray casts and box and point
+  * queries over its shapes, through the world's broadphase (see [[sims.collision.ShapeQueries]]),
+  * which looks at the shapes near the ray or box only. Every query skips sensors unless asked for them with `sensors = true` (a sensor is
   * a region, not a thing a ray or a swept shape would stop at).
   */
 trait WorldQueries:
   this: World =>
+
+  /** The body of this world with that `id` (see `Body.id`), if there is one: in a loaded world,
+    * the body that had it when the world was saved.
+    */
+  def bodyById(id: Int): Option[Body] = bodyIds.body(id).filter(_.world eq this)
+
+  /** The first body of this world (in world order) with that `name`, if any. */
+  def bodyNamed(name: String): Option[Body] = bodyList.find(_.name.contains(name))
+
+  /** The first joint of this world (in world order) with that `name`, if any. */
+  def jointNamed(name: String): Option[Joint] = jointList.find(_.name.contains(name))
 
   private val queries = ShapeQueries(this)
 
