@@ -7,7 +7,7 @@ import sims.solver.{ClassicStep, SoftStep}
 /** The SiMS side of the browser benchmark page (bench/browser/site): offers
   * `window.simsBench` to the page's script, which times SiMS and the JavaScript engines alike.
   * `layout(name)` gives a bench scene as plain values for the other engines to build (the same
-  * [[Layout]] the JVM bench's peers translate); `world(name, solver)` a SiMS world of it with
+  * `sims.scenes.Layout` the JVM bench's peers translate); `world(name, solver)` a SiMS world of it with
   * `step()`, `state()` (x, y, angle of every body) and `jointLengths()`.
   */
 object Main:
