@@ -37,12 +37,16 @@ class DependenciesSpec extends AnyFunSuite:
     assert(found.isEmpty, found.mkString("\n"))
 
   test("dynamics and collision do not use the steps, but for the world's own solver"):
-    val world = root.resolve("dynamics/World.scala")
-    val found = offenders("dynamics", Set("solver", "prefabs", "io"), _ == world) ++
+    val choice = root.resolve("dynamics/SolverChoice.scala")
+    val found = offenders("dynamics", Set("solver", "prefabs", "io"), _ == choice) ++
       offenders("collision", Set("solver", "prefabs", "io"))
     assert(found.isEmpty, found.mkString("\n"))
-    val worldImports = Files.readAllLines(world).asScala.filter(_.startsWith("import sims.solver"))
-    assert(worldImports == Seq("import sims.solver.{ClassicStep, Solver}"), worldImports)
+    val choiceImports = Files.readAllLines(choice).asScala.filter(_.startsWith("import sims.solver"))
+    assert(choiceImports == Seq("import sims.solver.{ClassicStep, Solver}"), choiceImports)
+
+  test("the world only coordinates: World.scala stays under 250 lines, its parts in files of their own"):
+    val lines = Files.readAllLines(root.resolve("dynamics/World.scala")).size
+    assert(lines < 250, s"World.scala has $lines lines")
 
   test("the joints know neither the steps nor the world's other parts but the bodies"):
     val found = offenders("dynamics/joints", Set("solver", "collision", "prefabs", "io"))

@@ -2,16 +2,15 @@ package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
-import sims.collision.{Collision, CollisionPipeline, Contact, Detector, GridDetector}
+import sims.collision.{CollisionPipeline, Detector, GridDetector}
 import sims.dynamics.joints.Joint
 import sims.geometry.Vector2D
-import sims.solver.{ClassicStep, Solver}
 
 /** A world of bodies and joints, stepped in time by `step()` (documentation chapters 3 and 4).
   *
   * The world coordinates: it keeps the bodies, joints and shapes, the settings and the time,
   * and runs each step as a transaction (see `step`). What one step does is its `solver`'s:
-  * [[sims.solver.ClassicStep]] (SiMS 1.2's step) unless another is chosen. Its queries
+  * [[sims.solver.ClassicStep]] (SiMS 1.2's step) unless another is chosen ([[SolverChoice]]). Its queries
   * ([[WorldQueries]]), its contact and sensor events ([[WorldEvents]]), the guard a solver calls
   * after each stage ([[StepGuard]]), the solvers' own data ([[SolverWorkspaces]]), sleeping
   * ([[WorldSleep]]) and the joints that break ([[JointBreaking]]) each have a file of their own.
@@ -22,12 +21,11 @@ import sims.solver.{ClassicStep, Solver}
   * builds and drops a grid detector first.)
   */
 class World(makeDetector: World => Detector = GridDetector(_))
-    extends WorldQueries, WorldEvents, StepGuard, SolverWorkspaces, WorldSleep, JointBreaking:
+    extends SolverChoice, WorldQueries, WorldEvents, StepGuard, SolverWorkspaces, WorldSleep, JointBreaking:
   private var _timeStep = Defaults.TimeStep
   private var _iterations = Defaults.Iterations
   private var _gravity = Defaults.Gravity
   private var _time = 0.0
-  private var _solver: Solver = ClassicStep
   private val bodyBuffer = ArrayBuffer.empty[Body]
   private val jointBuffer = ArrayBuffer.empty[Joint]
   private val shapeList = ShapeList()
@@ -49,30 +47,6 @@ class World(makeDetector: World => Detector = GridDetector(_))
 
   /** Whether phase 6 (position correction) runs. */
   var enablePositionCorrection: Boolean = true
-
-  /** What `step()` runs (default [[sims.solver.ClassicStep]]); may be switched at any time. */
-  def solver: Solver = _solver
-
-  /** Chooses the solver of the next steps; must not be null. Switching to the classic step
-    * fails, changing nothing, while a joint has a feature only the soft step steps (a motor, a
-    * spring, a break force, or a kind SiMS 1.2 has not: weld, wheel, motor joint).
-    */
-  def solver_=(value: Solver): Unit =
-    if value == null then throw IllegalArgumentException("solver must not be null")
-    if value eq ClassicStep then
-      jointBuffer.foreach(j => classicStepProblem(j).foreach(p => throw IllegalArgumentException(p)))
-    // Only the soft step keeps bodies asleep; any other starts with every body awake.
-    if !(value eq _solver) then wakeAll()
-    _solver = value
-
-  private[sims] def classicProblem(joint: Joint): Option[String] =
-    if _solver eq ClassicStep then classicStepProblem(joint) else None
-
-  /** Why the classic step cannot step `joint`, or None. */
-  private def classicStepProblem(joint: Joint): Option[String] =
-    joint.softStepFeature.map(feature =>
-      s"$joint has $feature, which ClassicStep (SiMS 1.2's step) cannot step: use the soft step, " +
-        "world.solver = SoftStep()")
 
   /** Duration of one step in seconds (default 1/60). */
   def timeStep: Double = _timeStep
@@ -116,20 +90,6 @@ class World(makeDetector: World => Detector = GridDetector(_))
 
   /** The joints, for the solvers' loops (not to be modified). */
   private[sims] def jointList: ArrayBuffer[Joint] = jointBuffer
-
-  /** The collisions the detector found last, e.g. to draw them: under the classic step, those
-    * after the last position correction of the last step. The soft step does not use them (see
-    * `contacts` for either step's). The objects are the detector's own: the built-in detector
-    * refills them in place at its next `detect()` or `refresh()`, so they describe the last
-    * classic step until the next `step()`; copy what you need to keep.
-    */
-  def collisions: collection.IndexedSeq[Collision] = detector.collisions
-
-  /** The contacts of the last step as its solver saw them (for either step: the classic
-    * step's collisions, the soft step's manifolds with their impulses), as copies that stay
-    * valid.
-    */
-  def contacts: IndexedSeq[Contact] = _solver.contacts(this)
 
   /** Called by a body of this world whose `bullet` flag changed to `value`. */
   private[sims] def bulletChanged(value: Boolean): Unit = bulletCount += (if value then 1 else -1)
@@ -200,9 +160,6 @@ class World(makeDetector: World => Detector = GridDetector(_))
     joint.world = null
     if !joint.collideConnected then joint.keepApart(false)
 
-  // The ids of the bodies (see `bodyById`).
-  private[dynamics] val bodyIds = WorldIds()
-
   /** Counts the sensors and the bullet of a body joining (`sign` 1) or leaving (-1). */
   private def countFlags(body: Body, sign: Int): Unit =
     if body.bullet then bulletCount += sign
@@ -232,7 +189,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     shapesMoved()
     enterStage(StepGuard.StartStage)
     try
-      _solver.step(this)
+      solver.step(this)
       shapesMoved() // also after: a query made during the step (by a joint, say) saw other positions
       enterStage(StepGuard.EventsStage)
       breakJoints()
@@ -284,7 +241,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     */
   override def toString: String =
     s"World(bodies = ${bodyBuffer.length}, joints = ${jointBuffer.length}, shapes = ${shapeList.array.length}, " +
-      s"time = ${_time} s, solver = ${_solver})"
+      s"time = ${_time} s, solver = $solver)"
 
 /** The queries' default filter. */
 object World:

@@ -1,17 +1,21 @@
 package sims.dynamics
 
 import scala.collection.mutable.ArrayBuffer
-import sims.collision.{RayHit, ShapeQueries}
+import sims.collision.{Collision, Contact, RayHit, ShapeQueries}
 import sims.dynamics.joints.Joint
 import sims.geometry.{AABB, Vector2D}
 
-/** A world's queries: its bodies and joints by id and name, and ray casts and box and point
-  * queries over its shapes, through the world's broadphase (see [[sims.collision.ShapeQueries]]),
-  * which looks at the shapes near the ray or box only. Every query skips sensors unless asked for them with `sensors = true` (a sensor is
-  * a region, not a thing a ray or a swept shape would stop at).
+/** A world's queries: its bodies and joints by id and name, the last step's collisions and
+  * contacts, and ray casts and box and point queries over its shapes, through the world's
+  * broadphase (see [[sims.collision.ShapeQueries]]), which looks at the shapes near the ray or
+  * box only. Every query skips sensors unless asked for them with `sensors = true` (a sensor
+  * is a region, not a thing a ray or a swept shape would stop at).
   */
 trait WorldQueries:
   this: World =>
+
+  // The ids of the bodies (see `bodyById`).
+  private[dynamics] val bodyIds = WorldIds()
 
   /** The body of this world with that `id` (see `Body.id`), if there is one: in a loaded world,
     * the body that had it when the world was saved.
@@ -23,6 +27,20 @@ trait WorldQueries:
 
   /** The first joint of this world (in world order) with that `name`, if any. */
   def jointNamed(name: String): Option[Joint] = jointList.find(_.name.contains(name))
+
+  /** The collisions the detector found last, e.g. to draw them: under the classic step, those
+    * after the last position correction of the last step. The soft step does not use them (see
+    * `contacts` for either step's). The objects are the detector's own: the built-in detector
+    * refills them in place at its next `detect()` or `refresh()`, so they describe the last
+    * classic step until the next `step()`; copy what you need to keep.
+    */
+  def collisions: collection.IndexedSeq[Collision] = detector.collisions
+
+  /** The contacts of the last step as its solver saw them (for either step: the classic
+    * step's collisions, the soft step's manifolds with their impulses), as copies that stay
+    * valid.
+    */
+  def contacts: IndexedSeq[Contact] = solver.contacts(this)
 
   private val queries = ShapeQueries(this)
 
