@@ -4,7 +4,7 @@ import org.scalacheck.Gen
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
-import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
+import sims.dynamics.{Body, Circle, Shape, World}
 import sims.geometry.Vector2D
 
 /** The grid broadphase finds exactly the pairs a brute-force all-pairs test finds. */

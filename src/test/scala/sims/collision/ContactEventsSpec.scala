@@ -3,7 +3,7 @@ package sims.collision
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import sims.Defaults
-import sims.dynamics.{Body, Circle, Rectangle, Shape, StepFailedException, World}
+import sims.dynamics.{Circle, Rectangle, Shape, World}
 import sims.dynamics.joints.RevoluteJoint
 import sims.geometry.Vector2D
 import sims.solver.{ClassicStep, SoftStep, Solver}

@@ -4,10 +4,10 @@ import org.scalacheck.Gen
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
-import sims.dynamics.{Body, Circle, Rectangle, Shape, World}
+import sims.dynamics.{Body, Circle, Rectangle, World}
 import sims.dynamics.joints.{DistanceJoint, RevoluteJoint}
 import sims.geometry.Vector2D
-import sims.solver.{ClassicStep, SoftStep}
+import sims.solver.SoftStep
 
 /** Collision filtering: Box2D's rule on categories, masks and groups, and joints whose bodies
   * do not collide, under both steps.

@@ -4,7 +4,6 @@ import org.scalacheck.Gen
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
-import sims.collision.GridDetector
 import sims.geometry.Vector2D
 
 /** The convex polygon made from any points: its hull, checks and mass properties (the

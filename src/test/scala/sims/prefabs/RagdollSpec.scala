@@ -8,6 +8,7 @@ import sims.dynamics.{Body, Rectangle, World}
 import sims.geometry.Vector2D
 
 class RagdollSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
+  @annotation.nowarn("msg=unused") // taken by forAll as its Shrink[Double]: the lint misses that use
   private given Shrink[Double] = Shrink.shrinkAny
 
   /** A world with a fixed floor whose top is at y = 0. */

@@ -2,7 +2,7 @@ package sims.solver
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
-import sims.dynamics.{Body, Circle, Rectangle, Shape, World}
+import sims.dynamics.{Circle, Rectangle, Shape, World}
 import sims.geometry.Vector2D
 
 /** Bullets (`Body.bullet`): a 0.2 m ball at 100 and 300 m/s and a small spinning box at 100 m/s,

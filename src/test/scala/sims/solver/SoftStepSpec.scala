@@ -6,7 +6,7 @@ import org.scalatest.matchers.should.Matchers
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
 import sims.collision.{Collision, Detector, GridDetector}
 import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
-import sims.dynamics.joints.{DistanceJoint, Joint, PrismaticJoint, RevoluteJoint, SpringJoint}
+import sims.dynamics.joints.{DistanceJoint, Joint, RevoluteJoint, SpringJoint}
 import sims.geometry.{AABB, Projection, Vector2D}
 
 /** The soft step's contract: its parameters, its integration, the laws it keeps (momentum,

@@ -1,7 +1,6 @@
 package sims.bench
 
 import sims.solver.ContactSolver
-import sims.dynamics.World
 
 /** Where a SiMS step spends its time, without JMH: for each scene given, the warm-up steps,
   * a snapshot, and then the same step replayed from that snapshot again and again, so that

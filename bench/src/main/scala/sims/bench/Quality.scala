@@ -2,7 +2,7 @@ package sims.bench
 
 import java.nio.file.{Files, Path}
 import sims.dynamics.World
-import sims.scenes.{Ballpit, BoxPyramid, BoxStack, Drop, HeavyStack, Layout, LayoutScene, Outline, Scene, SwingingChain}
+import sims.scenes.{Ballpit, BoxPyramid, BoxStack, Drop, HeavyStack, Layout, Outline, Scene, SwingingChain}
 
 /** The quality report of the soft step: the same scenes in every engine (SiMS with
   * the classic step, SiMS with `SoftStep()`, jBox2D, dyn4j), each with its defaults at 60 Hz and

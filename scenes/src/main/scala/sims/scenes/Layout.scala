@@ -1,6 +1,6 @@
 package sims.scenes
 
-import sims.dynamics.{Body, Shape, World}
+import sims.dynamics.{Shape, World}
 import sims.dynamics.joints.{DistanceJoint, RevoluteJoint}
 import sims.geometry.{PortableMath, Vector2D}
 

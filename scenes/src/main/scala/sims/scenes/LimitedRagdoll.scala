@@ -1,7 +1,6 @@
 package sims.scenes
 
 import sims.dynamics.joints.{JointLimits, RevoluteJoint}
-import sims.geometry.Vector2D
 import sims.prefabs.Ragdoll
 
 /** The Ragdoll prefab down the Ragdoll scene's stairs, its joints limited as a body's are:

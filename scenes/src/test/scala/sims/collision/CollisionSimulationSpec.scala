@@ -2,7 +2,7 @@ package sims.collision
 
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
-import sims.dynamics.{Body, Circle, Rectangle, World}
+import sims.dynamics.{Body, Rectangle, World}
 import sims.geometry.Vector2D
 import sims.scenes.{BallStack, Scene}
 

@@ -1,6 +1,5 @@
 package sims.solver.soft
 
-import sims.Defaults
 import sims.collision.{Collision, GridDetector, PairKey}
 import sims.collision.manifold.Manifold
 import sims.collision.narrowphase.PairKind

@@ -14,8 +14,6 @@ import sims.dynamics.Shape
   * that fails before it leaves the committed one as it was.
   */
 private[sims] final class ContactTable:
-  import ContactTable.*
-
   /** The generation being built (this step's contacts). */
   var current: Contacts = Contacts()
   /** The committed generation (the last step's contacts). */

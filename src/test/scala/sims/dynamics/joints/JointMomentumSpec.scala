@@ -11,6 +11,7 @@ import sims.geometry.Vector2D
 class JointMomentumSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
   // Shrinking towards 0 would reach speeds below sims.Defaults.RestingSpeed, which phase 5 sets to
   // exactly 0 (that breaks conservation on purpose); report the case as generated instead.
+  @annotation.nowarn("msg=unused") // taken by forAll as its Shrink[Double]: the lint misses that use
   private given Shrink[Double] = Shrink.shrinkAny
 
   /** A speed whose size is at least 0.5, so the rest threshold never applies. */

@@ -8,6 +8,7 @@ import sims.dynamics.{Body, Circle, Rectangle, World}
 import sims.geometry.Vector2D
 
 class MouseJointSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
+  @annotation.nowarn("msg=unused") // taken by forAll as its Shrink[Double]: the lint misses that use
   private given Shrink[Double] = Shrink.shrinkAny
 
   private def world(gravity: Boolean): World =

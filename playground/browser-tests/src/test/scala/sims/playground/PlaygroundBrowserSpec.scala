@@ -10,7 +10,7 @@ import org.scalatest.BeforeAndAfterAll
 import org.scalatest.funsuite.AnyFunSuite
 import scala.jdk.CollectionConverters.*
 import sims.scenes.{PlatformHashesSpec, Scenes, StateFingerprint}
-import sims.solver.{ClassicStep, SoftStep}
+import sims.solver.ClassicStep
 
 /** The playground page (`playground/staticSite`) in headless Chromium, used as a person would:
   * the choosers, the buttons and the mouse; its state read through `window.simsPlayground`.
