@@ -10,7 +10,7 @@ class BenchScenesSpec extends AnyFunSuite with Matchers:
 
   test("the standard scenes keep the bench's names and order") {
     BenchScenes.names shouldBe Seq("ballpit-500", "ballpit-1000", "ballpit-2000", "ballpit-4000", "ballpit-8000",
-      "ballpit-16000", "pyramid-20", "chain-100", "ballstack", "large_pyramid", "many_pyramids", "joint_grid", "smash")
+      "ballpit-16000", "pyramid-20", "chain-100", "ballstack", "large_pyramid", "many_pyramids", "joint_grid", "smash", "rain")
   }
 
   test("families are found by name for any size, ignoring case, and nothing else is") {
