@@ -63,11 +63,7 @@ lazy val jvmOnlyTests = Set[String](
   "WorldCodecSpec.scala", // reads saved worlds from the class path's resources
   // These expect messages and toString with the JVM's Double.toString ("1.0"; Scala.js prints "1").
   "Vector2DSpec.scala", "EdgeSpec.scala", "CapsuleSpec.scala", "HullPolygonSpec.scala", "BodySpec.scala",
-  "ShapeSpec.scala", "DerivedQuantitiesSpec.scala", "GuardAndReplaySpec.scala",
-  // A property of each fails at a case that only the Node run draws (its own generator stream);
-  // the same arguments fail on the JVM too: reported, not yet fixed. (FuzzSpec also expects the
-  // JVM's Double.toString in a message.)
-  "SoftStepSpec.scala", "FuzzSpec.scala"
+  "ShapeSpec.scala", "DerivedQuantitiesSpec.scala", "GuardAndReplaySpec.scala"
 )
 
 /** The sources `project`'s tests share with Scala.js: all but the JVM-only ones. */
