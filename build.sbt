@@ -62,14 +62,7 @@ lazy val jvmOnlyTests = Set[String](
   "ReadmeSpec.scala", // reads README.md from the disk
   "SoftBodiesLayoutSpec.scala", "DependenciesSpec.scala", // read the library's sources from the disk
   "ManifoldSpec.scala", // counts allocated bytes with the JVM's ThreadMXBean
-  "WorldCodecSpec.scala", // reads saved worlds from the class path's resources
-  // These expect messages and toString with the JVM's Double.toString ("1.0"; Scala.js prints "1").
-  "Vector2DSpec.scala", "EdgeSpec.scala", "CapsuleSpec.scala", "HullPolygonSpec.scala", "BodySpec.scala",
-  "ShapeSpec.scala", "DerivedQuantitiesSpec.scala", "GuardAndReplaySpec.scala",
-  // A property of each fails at a case that only the Node run draws (its own generator stream);
-  // the same arguments fail on the JVM too: reported, not yet fixed. (FuzzSpec also expects the
-  // JVM's Double.toString in a message.)
-  "CapsuleCollisionSpec.scala", "SoftStepSpec.scala", "FuzzSpec.scala"
+  "WorldCodecSpec.scala" // reads saved worlds from the class path's resources
 )
 
 /** The sources `project`'s tests share with Scala.js: all but the JVM-only ones. */

@@ -119,6 +119,23 @@ class CapsuleCollisionSpec extends AnyFunSuite with Matchers with ScalaCheckProp
     }
   }
 
+  test("two edges that cross touch at one point wherever they are: a rigid move does not change it") {
+    // Drawn by the rigid-move law (on Node's stream): the cores cross 0.05 m from the second
+    // edge's first end, and what rounding left of their distance (about 1e-16 m, positive
+    // or not) decided whether the pair had a point, unmoved or moved.
+    val a = edge(-3.4950996865472206, 2.5119693250758584, -1.769995673436517, -0.4390304530020359)
+    val b = edge(-2.944928891277082, 1.4647563868859739, -0.7175424437574671, 2.8079657923326837)
+    val before = CapsuleCollision(a, b)
+    before.pointCount shouldBe 1
+    moveRigidly(a, 2.2371921015105842, 0.7911318190248671, 1.6466188175680818)
+    moveRigidly(b, 2.2371921015105842, 0.7911318190248671, 1.6466188175680818)
+    val after = CapsuleCollision(a, b)
+    after.pointCount shouldBe 1
+    val expected = before.points.head.rotate(2.2371921015105842) + Vector2D(0.7911318190248671, 1.6466188175680818)
+    after.points.head.x shouldBe expected.x +- 1e-9
+    after.points.head.y shouldBe expected.y +- 1e-9
+  }
+
   test("law: moving the pair rigidly moves the collision with it") {
     forAll(pairs, Gen.choose(-math.Pi, math.Pi), ManifoldFixtures.position, minSuccessful(300)) {
       case ((a, b), angle, shift) =>

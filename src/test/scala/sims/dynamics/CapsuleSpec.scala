@@ -41,13 +41,13 @@ class CapsuleSpec extends AnyFunSuite with Matchers:
   test("printed with its sizes and place; its core as a segment") {
     val c = Capsule(1, 0.5, 2)
     c.pos = Vector2D(1, 2)
-    c.toString shouldBe "Capsule(halfLength = 1.0, radius = 0.5, density = 2.0, pos = (1.0, 2.0))"
+    c.toString shouldBe s"Capsule(halfLength = ${1.0}, radius = 0.5, density = ${2.0}, pos = (${1.0}, ${2.0}))"
     c.core shouldBe sims.geometry.Segment(Vector2D(0, 2), Vector2D(2, 2))
   }
 
   test("bad sizes are rejected naming the argument") {
     def message(f: => Any): String = intercept[IllegalArgumentException](f).getMessage
-    message(Capsule(0, 1, 1)) should include("halfLength must be positive and finite, got 0.0")
+    message(Capsule(0, 1, 1)) should include(s"halfLength must be positive and finite, got ${0.0}")
     message(Capsule(1, -1, 1)) should include("radius")
     message(Capsule(1, 1, Double.NaN)) should include("density")
   }

@@ -13,14 +13,14 @@ class DerivedQuantitiesSpec extends AnyFunSuite with Matchers:
 
   test("Circle(1e200, 1): its volume overflows, rejected naming radius and density") {
     val message = rejected(Circle(1e200, 1))
-    message should include("Circle(radius = 1.0E200, density = 1.0)")
+    message should include(s"Circle(radius = ${1e200}, density = ${1.0})")
     message should include("volume would be Infinity")
   }
 
   test("Rectangle(1e-300, 1e-300, 1): its volume underflows to 0, rejected naming its arguments") {
     val message = rejected(Rectangle(1e-300, 1e-300, 1))
-    message should include("Rectangle(halfWidth = 1.0E-300, halfHeight = 1.0E-300, density = 1.0)")
-    message should include("volume would be 0.0")
+    message should include(s"Rectangle(halfWidth = ${1e-300}, halfHeight = ${1e-300}, density = ${1.0})")
+    message should include(s"volume would be ${0.0}")
   }
 
   test("Circle(1, 1e308): its mass overflows") {
@@ -37,7 +37,7 @@ class DerivedQuantitiesSpec extends AnyFunSuite with Matchers:
   }
 
   test("RegularPolygon(3, 1e-170, 1): rejected naming n, radius and density") {
-    rejected(RegularPolygon(3, 1e-170, 1)) should include("RegularPolygon(n = 3, radius = 1.0E-170, density = 1.0)")
+    rejected(RegularPolygon(3, 1e-170, 1)) should include(s"RegularPolygon(n = 3, radius = ${1e-170}, density = ${1.0})")
   }
 
   test("a body whose parts are fine but whose moment of inertia overflows is rejected, naming its shapes") {
@@ -46,7 +46,7 @@ class DerivedQuantitiesSpec extends AnyFunSuite with Matchers:
     b.pos = Vector2D(1e20, 0)
     val message = rejected(Body(a, b))
     message should include("moment of inertia would be Infinity")
-    message should include("Circle(radius = 1.0, density = 1.0E280")
+    message should include(s"Circle(radius = ${1.0}, density = ${1e280}")
   }
 
   test("moving a shape of a body so that the body's inertia overflows is rejected and leaves shape and body as they were") {

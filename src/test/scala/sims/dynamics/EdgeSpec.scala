@@ -43,12 +43,12 @@ class EdgeSpec extends AnyFunSuite with Matchers:
   }
 
   test("printed with its ends") {
-    Edge(Vector2D(-1, 0), Vector2D(3, 0)).toString shouldBe "Edge(from (-1.0, 0.0) to (3.0, 0.0))"
+    Edge(Vector2D(-1, 0), Vector2D(3, 0)).toString shouldBe s"Edge(from (${-1.0}, ${0.0}) to (${3.0}, ${0.0}))"
   }
 
   test("bad points are rejected naming the argument") {
     def message(f: => Any): String = intercept[IllegalArgumentException](f).getMessage
-    message(Edge(Vector2D(1, 1), Vector2D(1, 1))) should include("end must differ from start, got (1.0, 1.0)")
+    message(Edge(Vector2D(1, 1), Vector2D(1, 1))) should include(s"end must differ from start, got (${1.0}, ${1.0})")
     message(Edge(Vector2D(Double.NaN, 1), Vector2D(1, 1))) should include("start must be finite")
     message(Edge(Vector2D(0, 0), null)) should include("end must not be null")
   }

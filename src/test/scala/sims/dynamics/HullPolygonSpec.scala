@@ -65,7 +65,7 @@ class HullPolygonSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyC
 
   test("printed with its corners, density and place") {
     HullPolygon(Seq(Vector2D(0, 0), Vector2D(2, 0), Vector2D(2, 2), Vector2D(0, 2)), 3).toString shouldBe
-      "HullPolygon(4 corners, density = 3.0, pos = (1.0, 1.0))"
+      s"HullPolygon(4 corners, density = ${3.0}, pos = (${1.0}, ${1.0}))"
   }
 
   test("bad points fail, naming the argument and the value") {
@@ -73,10 +73,10 @@ class HullPolygonSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyC
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 0)), 1)) should include("points must hold at least 3 distinct points, got 2")
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 0), Vector2D(1, 0), Vector2D(0, 0)), 1)) should include("got 2")
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 1), Vector2D(3, 3)), 1)) should
-      (include("points must not all lie on one line") and include("(3.0, 3.0)"))
+      (include("points must not all lie on one line") and include(s"(${3.0}, ${3.0})"))
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 0), Vector2D(0.5, 1e-12)), 1)) should include("one line")
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 0), Vector2D(Double.NaN, 1)), 1)) should
-      include("points must be finite, got (NaN, 1.0) at index 2")
+      include(s"points must be finite, got (NaN, ${1.0}) at index 2")
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 0), null), 1)) should include("at index 2")
     message(HullPolygon(null, 1)) should include("points must not be null")
     message(HullPolygon(Seq(Vector2D(0, 0), Vector2D(1, 0), Vector2D(0, 1)), 0)) should include("density")

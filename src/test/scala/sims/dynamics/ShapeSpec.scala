@@ -121,7 +121,7 @@ class ShapeSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
   test("bad sizes, densities and coefficients are rejected naming the argument") {
     def message(f: => Any): String = intercept[IllegalArgumentException](f).getMessage
     message(Circle(0, 1)) should include("radius")
-    message(Circle(-1, 1)) should include("-1.0")
+    message(Circle(-1, 1)) should include(s"${-1.0}")
     message(Circle(1, 0)) should include("density")
     message(Circle(Double.NaN, 1)) should include("radius")
     message(Circle(1, Double.PositiveInfinity)) should include("density")

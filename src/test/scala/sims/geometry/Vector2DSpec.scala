@@ -33,7 +33,7 @@ class Vector2DSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     Vector2D(1e-3, 0).isNull shouldBe false
     Vector2D(1, Double.NaN).isFinite shouldBe false
     Vector2D(1, Double.PositiveInfinity).isFinite shouldBe false
-    Vector2D(1, 2).toString shouldBe "(1.0, 2.0)"
+    Vector2D(1, 2).toString shouldBe s"(${1.0}, ${2.0})"
   }
 
   test("unit of the null vector is an error") {

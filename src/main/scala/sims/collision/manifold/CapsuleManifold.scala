@@ -15,7 +15,8 @@ import sims.dynamics.RoundedSegment
 // One point: midway between the surfaces on the line of the closest points cA, cB, normal
 // n = (cB - cA) / |cB - cA|, separation |cB - cA| - rA - rB. Cores that cross have no such
 // line (it turns with every rounding): then the side normal of the core that separates them
-// better, as between polygons, pointing towards the other core's middle.
+// better, as between polygons, pointing towards the other core's middle, and separation
+// -rA - rB (two crossing edges touch).
 //
 // Two points: a capsule lying along another (cores parallel within ParallelSine) rests on a
 // stretch of it, which one point would let rock. As in the polygon manifold, the reference is
@@ -73,13 +74,15 @@ private[sims] object CapsuleManifold:
     val closestAX = aXs(0) + s * d1x; val closestAY = aYs(0) + s * d1y
     val closestBX = bXs(0) + t * d2x; val closestBY = bYs(0) + t * d2y
     val gapX = closestBX - closestAX; val gapY = closestBY - closestAY
-    val distance = math.sqrt(gapX * gapX + gapY * gapY)
+    // Cores that meet have closest points in no particular direction: within rounding of
+    // their lengths, they count as crossing, at distance 0. (What rounding leaves of the
+    // distance would otherwise decide whether two crossing edges, of radius 0, touch.)
+    val gapLength = math.sqrt(gapX * gapX + gapY * gapY)
+    val crossing = gapLength <= CrossingTolerance * (math.sqrt(a) + math.sqrt(e))
+    val distance = if crossing then 0.0 else gapLength
     val radiusA = capsuleA.radius
     val radiusB = capsuleB.radius
     if distance - radiusA - radiusB <= speculativeDistance then
-      // Cores that meet have closest points in no particular direction: within rounding of
-      // their lengths, they count as crossing.
-      val crossing = distance <= CrossingTolerance * (math.sqrt(a) + math.sqrt(e))
       val cross = d1x * d2y - d1y * d2x
       if !crossing && math.abs(cross) <= ParallelSine * math.sqrt(a * e) then
         alongEachOther(capsuleA, capsuleB, gapX, gapY, speculativeDistance, linearSlop, manifold)
