@@ -26,7 +26,7 @@ object Main:
 
   /** Usage text. */
   val Usage: String =
-    """usage: examples/run [Scene] [--seconds S] [--out DIR] [--solver classic|soft]
+    s"""usage: examples/run [Scene] [--seconds S] [--out DIR] [--solver classic|soft]
       |                                        simulate headless, write GIF, PNG and CSV
       |       examples/run [Scene] --compare [--seconds S] [--out DIR]
       |                                        both solvers side by side: <scene>-compare.gif and .png
@@ -34,7 +34,7 @@ object Main:
       |                                        open the interactive viewer
       |       examples/run --list              list the scenes
       |The solver is SiMS's own step (classic, the default) or the soft step (soft); a scene that
-      |runs under the soft step only (Car, Bridge, Windmill) gets the soft step.""".stripMargin
+      |runs under the soft step only (${Scenes.all.filter(_.softStepOnly).map(_.name).mkString(", ")}) gets the soft step.""".stripMargin
 
   /** Parses the arguments; Left holds an error message. */
   def parse(arguments: Seq[String]): Either[String, Options] =

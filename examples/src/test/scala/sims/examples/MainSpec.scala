@@ -48,6 +48,7 @@ class MainSpec extends AnyFunSuite:
     assert(Main.listing.linesIterator.filter(_.endsWith("(soft step only)")).map(_.trim.takeWhile(_ != ' ')).toSeq ==
       Seq(Car.name, "Bridge", "Windmill"))
     assert(!Main.listing.linesIterator.exists(l => l.contains(Pyramid.name) && l.contains("soft step only")))
+    assert(Main.Usage.contains("runs under the soft step only (Car, Bridge, Windmill) gets the soft step"))
 
   test("bad arguments are reported"):
     assert(parse(Seq("--seconds", "soon")).isLeft)
