@@ -1,15 +1,16 @@
 package sims.scenes
 
-import sims.dynamics.{Body, Rectangle}
+import sims.dynamics.{Body, Rectangle, World}
 import sims.dynamics.joints.RevoluteJoint
 import sims.geometry.{PortableMath, Vector2D}
+import sims.solver.SoftStep
 
 /** A plank bridge between two fixed piers: planks pinned end to end by revolute joints that
-  * break above `BreakForce`, the end planks pinned to the piers. It sags a little under its own
-  * weight and holds; a heavy load dropped from above lands on its middle after
-  * more than a second, the joints' pull grows past their limit, they break (the step
-  * reports them in `World.jointBreaks` and removes them), and the load falls through onto the
-  * river bed. Soft step only: the classic step measures no joint's load, so no joint of it breaks.
+  * break above `BreakForce`, the end planks pinned to the piers. It hangs a little slack and
+  * holds its own weight; after a second a heavy load is dropped onto its middle from just above,
+  * the joints' pull grows past their limit, some break (the step reports them in
+  * `World.jointBreaks` and removes them), and the load falls through onto the river bed. Soft
+  * step only: the classic step measures no joint's load, so no joint of it breaks.
   */
 object Bridge extends Scene:
   /** Planks, their half length and half thickness, m, and density, kg/m^2. */
@@ -20,11 +21,14 @@ object Bridge extends Scene:
   /** The deck's top face, m (the piers' tops too). */
   val DeckTop: Double = 3
   /** The joints' break force, N. */
-  val BreakForce: Double = 400
-  /** The load's half side, m, its density, kg/m^2, and how high above the deck its middle starts, m. */
+  val BreakForce: Double = 800
+  /** The load's half side, m, its density, kg/m^2, and how high above the deck's top its middle
+    * starts, m, at the end of step `DropStep` (one second).
+    */
   val LoadHalf: Double = 0.4
   val LoadDensity: Double = 60
-  val DropHeight: Double = 8
+  val DropHeight: Double = 1
+  val DropStep: Int = 60
   /** Half the distance between the piers' inner faces, m: a little less than the planks' half
     * length in all, so that the deck hangs with some slack.
     */
@@ -55,18 +59,37 @@ object Bridge extends Scene:
   def name: String = "Bridge"
   def description: String =
     "A plank bridge on breakable revolute joints holds its own weight; a heavy load dropped on it breaks it and falls through."
-  def view: Region = Region(-9, -0.5, 9, DeckTop + DropHeight + 1)
-  override def region: Region = Region(-9, -0.5, 9, DeckTop + DropHeight + 1)
+  def view: Region = Region(-9, -0.5, 9, 8)
   override def softStepOnly: Boolean = true
 
-  /** The bridge's parts in the world they were added to (the load None if left out). */
-  final case class Parts(planks: Seq[Body], joints: Seq[RevoluteJoint], load: Option[Body])
+  /** The bridge's planks and joints in the world they were added to. */
+  final case class Parts(planks: Seq[Body], joints: Seq[RevoluteJoint])
+
+  /** A world that drops the load onto the bridge at the end of step `DropStep` (or never, without
+    * the load).
+    */
+  final class BridgeWorld(withLoad: Boolean) extends World:
+    solver = SoftStep()
+    /** The load, once dropped. */
+    var load: Option[Body] = None
+    private var steps = 0
+
+    override def postStep(): Unit =
+      steps += 1
+      if steps == DropStep && withLoad then
+        val box = Rectangle(LoadHalf, LoadHalf, LoadDensity)
+        box.pos = Vector2D(0, DeckTop + DropHeight)
+        box.restitution = 0
+        val body = box.asBody
+        this += body
+        load = Some(body)
 
   /** The scene's world and its bridge; without the load if `withLoad` is false (the bridge
     * alone, to see what it holds of its own weight).
     */
   def stage(withLoad: Boolean = true): (Staged, Parts) =
-    val world = Scene.softWorldOf(Scene.ground(9))
+    val world = BridgeWorld(withLoad)
+    world += Scene.ground(9)
     val piers = for side <- Seq(-1.0, 1.0) yield
       val pier = Scene.fixedBox(Vector2D(side * (HalfGap + 1), DeckTop / 2), 1, DeckTop / 2)
       world += pier
@@ -87,14 +110,6 @@ object Bridge extends Scene:
       joint.breakForce = BreakForce
       world += joint
       joint
-    val load = Option.when(withLoad) {
-      val box = Rectangle(LoadHalf, LoadHalf, LoadDensity)
-      box.pos = Vector2D(0, DeckTop + DropHeight)
-      box.restitution = 0
-      val body = box.asBody
-      world += body
-      body
-    }
-    (Staged(world), Parts(planks, joints, load))
+    (Staged(world), Parts(planks, joints))
 
   def build(): Staged = stage()._1

@@ -69,7 +69,7 @@ object SceneHashesSpec:
     "Platformer" -> ("0e01a784731f675e", "b493319b076368c7"),
     "LimitedRagdoll" -> ("fce65789c5e27c8f", "8afb189631c8c37c"),
     "Car" -> (SoftOnly, "9dc81bce019a6309"),
-    "Bridge" -> (SoftOnly, "4901086cb22b859e"),
+    "Bridge" -> (SoftOnly, "4fe25df7065540fb"),
     "Windmill" -> (SoftOnly, "76faf052a2bcccfb")
   )
 
