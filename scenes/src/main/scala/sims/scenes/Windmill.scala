@@ -1,6 +1,6 @@
 package sims.scenes
 
-import sims.dynamics.{Body, Circle, Rectangle, Shape, World}
+import sims.dynamics.{Body, Rectangle, Shape, World}
 import sims.dynamics.joints.{JointMotor, RevoluteJoint}
 import sims.geometry.{PortableMath, Vector2D}
 import sims.solver.SoftStep
