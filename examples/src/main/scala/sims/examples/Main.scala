@@ -16,23 +16,25 @@ object Main:
 
   /** Parsed command line.
     *
-    * @param solver the solver of a headless run or the viewer's first one
+    * @param solver the solver of a headless run or the viewer's first one (None: the classic
+    *   step, or the soft step for a scene that runs under it only)
     * @param compare run headless under both solvers, side by side in one picture
     */
   final case class Options(scene: Option[String] = None, seconds: Double = DefaultSeconds,
       out: File = File(DefaultOut), gui: Boolean = false, list: Boolean = false, help: Boolean = false,
-      solver: SolverChoice = SolverChoice.Classic, compare: Boolean = false)
+      solver: Option[SolverChoice] = None, compare: Boolean = false)
 
   /** Usage text. */
   val Usage: String =
-    """usage: examples/run [Scene] [--seconds S] [--out DIR] [--solver classic|soft]
+    s"""usage: examples/run [Scene] [--seconds S] [--out DIR] [--solver classic|soft]
       |                                        simulate headless, write GIF, PNG and CSV
       |       examples/run [Scene] --compare [--seconds S] [--out DIR]
       |                                        both solvers side by side: <scene>-compare.gif and .png
       |       examples/run --gui [Scene] [--solver classic|soft]
       |                                        open the interactive viewer
       |       examples/run --list              list the scenes
-      |The solver is SiMS's own step (classic, the default) or the soft step (soft).""".stripMargin
+      |The solver is SiMS's own step (classic, the default) or the soft step (soft); a scene that
+      |runs under the soft step only (${Scenes.all.filter(_.softStepOnly).map(_.name).mkString(", ")}) gets the soft step.""".stripMargin
 
   /** Parses the arguments; Left holds an error message. */
   def parse(arguments: Seq[String]): Either[String, Options] =
@@ -46,7 +48,7 @@ object Main:
         else loop(tail, options.copy(compare = true))
       case "--solver" :: value :: tail =>
         SolverChoice.named(value) match
-          case Some(choice) => loop(tail, options.copy(solver = choice))
+          case Some(choice) => loop(tail, options.copy(solver = Some(choice)))
           case None => Left(s"--solver is ${SolverChoice.values.map(_.argument).mkString(" or ")}, got '$value'")
       case "--list" :: tail => loop(tail, options.copy(list = true))
       case ("--help" | "-h") :: tail => loop(tail, options.copy(help = true))
@@ -62,10 +64,21 @@ object Main:
         else loop(tail, options.copy(scene = Some(name)))
     loop(arguments.toList, Options())
 
+  /** The solver that runs `scene` as the options ask, or why it cannot: a scene that runs under
+    * the soft step only refuses `--solver classic` and `--compare`.
+    */
+  def solverFor(scene: Scene, options: Options): Either[String, SolverChoice] =
+    if scene.softStepOnly && options.compare then
+      Left(s"${scene.name} runs under the soft step only: --compare needs a scene that runs under both solvers")
+    else if scene.softStepOnly && options.solver.contains(SolverChoice.Classic) then
+      Left(s"${scene.name} runs under the soft step only (ClassicStep cannot step its joints): leave out --solver or say --solver soft")
+    else Right(SolverChoice.forScene(scene, options.solver.getOrElse(SolverChoice.Classic)))
+
   /** The listing of all scenes, one per line. */
   def listing: String =
     val width = Scenes.all.map(_.name.length).max
-    Scenes.all.map(s => s"  ${s.name.padTo(width, ' ')}  ${s.description}").mkString("\n")
+    Scenes.all.map(s => s"  ${s.name.padTo(width, ' ')}  ${s.description}${if s.softStepOnly then " (soft step only)" else ""}")
+      .mkString("\n")
 
   /** Runs the command line. */
   def main(arguments: Array[String]): Unit =
@@ -86,15 +99,20 @@ object Main:
               System.err.println(s"no scene named '$name'; the scenes are:\n$listing")
               sys.exit(2)
             }
+        val solver = solverFor(scene, options) match
+          case Right(choice) => choice
+          case Left(error) =>
+            System.err.println(error)
+            sys.exit(2)
         if options.gui then
           if java.awt.GraphicsEnvironment.isHeadless then
             System.err.println("the viewer needs a display; without one, run a scene headless: examples/run " + scene.name)
             sys.exit(1)
-          viewer.Viewer.open(scene, options.solver)
+          viewer.Viewer.open(scene, solver)
         else
           // No window is ever opened here: headless mode also works on machines without a display.
           System.setProperty("java.awt.headless", "true")
           if options.scene.isEmpty then
             println(s"Scenes:\n$listing\n\nNo scene named, running ${scene.name} (see --help).\n")
           if options.compare then HeadlessRun.compare(scene, options.seconds, options.out)
-          else HeadlessRun.run(scene, options.seconds, options.out, solver = options.solver)
+          else HeadlessRun.run(scene, options.seconds, options.out, solver = solver)

@@ -1,5 +1,6 @@
 package sims.examples
 
+import sims.scenes.Scene
 import sims.solver.{ClassicStep, Solver, SoftStep}
 
 /** The solvers the examples offer, each with its defaults: SiMS's own step (the default) and
@@ -22,3 +23,11 @@ enum SolverChoice(val argument: String, val label: String):
 object SolverChoice:
   /** The choice named `argument` on the command line (`classic` or `soft`, any case), if any. */
   def named(argument: String): Option[SolverChoice] = values.find(_.argument.equalsIgnoreCase(argument))
+
+  /** The solver that steps `scene` when `wanted` is chosen: `wanted`, or the soft step for a
+    * scene that runs under the soft step only (`Scene.softStepOnly`).
+    */
+  def forScene(scene: Scene, wanted: SolverChoice): SolverChoice = if scene.softStepOnly then Soft else wanted
+
+  /** The solvers `scene` may be stepped by: both, or the soft step alone for a soft-step-only scene. */
+  def offeredFor(scene: Scene): Seq[SolverChoice] = if scene.softStepOnly then Seq(Soft) else values.toSeq

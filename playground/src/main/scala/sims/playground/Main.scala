@@ -30,7 +30,18 @@ object Main:
       option.text = name
       solverChooser.appendChild(option)
     sceneChooser.value = playground.sceneName
-    solverChooser.value = "SoftStep"
+
+    // The solver in use, and only the solvers the scene may have enabled (the soft step alone
+    // for a scene that runs under it only).
+    def showSolver(): Unit =
+      val offered = playground.solversOffered
+      for i <- 0 until solverChooser.options.length do
+        val option = solverChooser.options(i)
+        option.disabled = !offered.contains(option.value)
+      solverChooser.value = playground.solverInUse
+      solverChooser.title =
+        if offered.size == 1 then s"${playground.sceneName} runs under the soft step only" else ""
+    showSolver()
 
     def showPlaying(): Unit = playButton.textContent = if playground.isPlaying then "Pause" else "Play"
     def showAction(): Unit =
@@ -39,7 +50,7 @@ object Main:
     showPlaying()
     showAction()
 
-    sceneChooser.addEventListener("change", (_: dom.Event) => { playground.load(sceneChooser.value); showAction() })
+    sceneChooser.addEventListener("change", (_: dom.Event) => { playground.load(sceneChooser.value); showAction(); showSolver() })
     solverChooser.addEventListener("change", (_: dom.Event) => playground.chooseSolver(solverChooser.value))
     playButton.addEventListener("click", (_: dom.Event) => { playground.setPlaying(!playground.isPlaying); showPlaying() })
     document.getElementById("step").addEventListener("click", (_: dom.Event) => { playground.step(); playground.draw() })
@@ -85,7 +96,7 @@ object Main:
       step = (n: Int) =>
         for _ <- 1 to n do playground.step()
         playground.draw(),
-      load = (name: String) => { sceneChooser.value = name; playground.load(name); showAction() },
+      load = (name: String) => { sceneChooser.value = name; playground.load(name); showAction(); showSolver() },
       fingerprint = () => StateFingerprint(playground.world),
       run = (scene: String, solver: String, steps: Int) =>
         val world = Scenes.find(scene).getOrElse(throw IllegalArgumentException(s"no scene named $scene")).build().world

@@ -8,7 +8,7 @@ import sims.scenes.{Scene, Scenes, Staged, StateFingerprint}
 import sims.solver.{ClassicStep, SoftStep, Solver}
 
 /** The playground page's state and behaviour: one running scene drawn on the canvas, the
-  * scene and solver choosers, play / pause / step / reset, dragging bodies with the mouse
+  * scene and solver choosers (a scene that runs under the soft step only is offered that alone), play / pause / step / reset, dragging bodies with the mouse
   * (dragging empty space pans, the wheel zooms) and the info line.
   */
 final class Playground(canvas: dom.HTMLCanvasElement, info: dom.Element):
@@ -33,9 +33,17 @@ final class Playground(canvas: dom.HTMLCanvasElement, info: dom.Element):
   /** Whether the world advances with the clock. */
   def isPlaying: Boolean = playing
 
+  /** The name of the solver stepping the world: the chosen one, or "SoftStep" for a scene that
+    * runs under the soft step only.
+    */
+  def solverInUse: String = if scene.softStepOnly then "SoftStep" else solverName
+
+  /** The solvers the running scene may be stepped by, by name: both, or the soft step alone. */
+  def solversOffered: Seq[String] = if scene.softStepOnly then Seq("SoftStep") else Playground.SolverNames
+
   private def build(): Staged =
     val built = scene.build()
-    built.world.solver = Playground.solver(solverName)
+    built.world.solver = Playground.solver(solverInUse)
     built
 
   /** Loads a fresh build of the scene of this name, fitted to the canvas; paused. */
@@ -47,10 +55,14 @@ final class Playground(canvas: dom.HTMLCanvasElement, info: dom.Element):
     lastStepMillis = 0
     draw()
 
-  /** Chooses the solver by name ("ClassicStep" or "SoftStep"); the running world switches at its next step. */
+  /** Chooses the solver by name ("ClassicStep" or "SoftStep"); the running world switches at its
+    * next step, unless its scene runs under the soft step only: it keeps the soft step, and the
+    * choice holds for the scenes loaded after it.
+    */
   def chooseSolver(name: String): Unit =
+    val solver = Playground.solver(name)
     solverName = name
-    world.solver = Playground.solver(name)
+    if !scene.softStepOnly then world.solver = solver
     draw()
 
   /** Starts or stops the clock. */
@@ -94,7 +106,7 @@ final class Playground(canvas: dom.HTMLCanvasElement, info: dom.Element):
   def draw(): Unit =
     Painter.paint(context, world, view)
     val contacts = world.contacts.map(_.points.size).sum
-    info.textContent = f"${scene.name} · $solverName · ${world.bodies.length} bodies · $contacts contacts · " +
+    info.textContent = f"${scene.name} · $solverInUse · ${world.bodies.length} bodies · $contacts contacts · " +
       f"${lastStepMillis}%.2f ms/step · t = ${world.time}%.2f s · state ${StateFingerprint(world)}"
 
   /** The pointer went down at canvas pixel (x, y): grab the free body there, else start panning. */

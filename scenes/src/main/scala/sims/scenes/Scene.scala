@@ -47,7 +47,17 @@ trait Scene:
   /** Where every body's centre must stay during the first seconds (the tests check 5 s). */
   def region: Region = view
 
-  /** Builds a fresh world for this scene (every call gives an independent one). */
+  /** Whether the scene runs under the soft step only. Such a scene shows what only the soft
+    * step has (motors, springs, joints that break, wheel, weld and motor joints): the classic
+    * step, SiMS 1.2's algorithm, cannot step them, so the scene's world comes with `SoftStep()`
+    * chosen, switching it to `ClassicStep` fails with the library's error, and the examples,
+    * the viewer and the playground offer it the soft step alone. Default false: both steps.
+    */
+  def softStepOnly: Boolean = false
+
+  /** Builds a fresh world for this scene (every call gives an independent one); a
+    * `softStepOnly` scene's world has `SoftStep()` as its solver already.
+    */
   def build(): Staged
 
 /** Building blocks shared by the scenes and by the tests that set up small worlds. */
@@ -90,6 +100,15 @@ object Scene:
     val rectangle = sims.dynamics.Rectangle(halfWidth, halfHeight, density)
     rectangle.pos = centre
     rectangle.asBody
+
+  /** A world stepped by `SoftStep()` (for a `softStepOnly` scene), with the given bodies added
+    * in order; the solver comes first, so that joints only the soft step has may join it.
+    */
+  def softWorldOf(bodies: Body*): World =
+    val world = World()
+    world.solver = sims.solver.SoftStep()
+    bodies.foreach(world += _)
+    world
 
   /** A world with the given bodies added in order. */
   def worldOf(bodies: Body*): World =

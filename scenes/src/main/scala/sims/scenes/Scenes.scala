@@ -6,7 +6,7 @@ object Scenes:
   val all: IndexedSeq[Scene] = IndexedSeq(
     BallStack, Chain, Stacking, Restitution, Friction, Spring, NetScene, Cup, Carriage, Wave,
     Atom, Cannon, PylonScene, RagdollScene, CompositeShape, Pyramid, Pile, NewtonsCradle, Dominoes, Queries, Filtering,
-    Shapes, Sensors, Bullet, Platformer, LimitedRagdoll)
+    Shapes, Sensors, Bullet, Platformer, LimitedRagdoll, Car, Bridge, Windmill)
 
   /** The scene run when none is named. */
   val default: Scene = BallStack

@@ -2,8 +2,11 @@ package sims.scenes
 
 import org.scalatest.funsuite.AnyFunSuite
 import sims.dynamics.{Body, World}
+import sims.solver.{ClassicStep, SoftStep}
 
-/** Every scene builds and runs headless without NaN, its bodies inside its stated region. */
+/** Every scene builds and runs headless without NaN, its bodies inside its stated region, under
+  * both steps (a soft-step-only scene under the soft step).
+  */
 class ScenesSpec extends AnyFunSuite:
   /** Simulated seconds per scene. */
   private val Seconds = 5.0
@@ -67,13 +70,27 @@ class ScenesSpec extends AnyFunSuite:
       assert(notFinite(staged.world).isEmpty, scene.name)
       assert(staged.world.bodies.size >= bodies, scene.name)
 
-  for scene <- Scenes.all; soft <- Seq(false, true) do
+  test("a soft-step-only scene's world comes with the soft step; switching it to ClassicStep fails, naming the step"):
+    assert(Scenes.all.filter(_.softStepOnly).map(_.name) == Seq(Car.name, Bridge.name, Windmill.name))
+    for scene <- Scenes.all do
+      val world = scene.build().world
+      if scene.softStepOnly then
+        assert(world.solver.isInstanceOf[SoftStep], scene.name)
+        val error = intercept[IllegalArgumentException](world.solver = ClassicStep)
+        assert(error.getMessage.contains("which ClassicStep (SiMS 1.2's step) cannot step: use the soft step"), scene.name)
+        assert(world.solver.isInstanceOf[SoftStep], s"${scene.name}: the failed switch changed nothing")
+        world.step()
+        assert(world.time > 0, scene.name)
+      else assert(world.solver == ClassicStep, s"${scene.name}: a new world's own solver")
+
+  // A soft-step-only scene runs under the soft step alone (the test above shows the classic step refusing it).
+  for scene <- Scenes.all; soft <- Seq(false, true) if soft || !scene.softStepOnly do
     val seconds = SecondsOf.getOrElse(scene.name, Seconds)
     val solver = if soft then " under SoftStep" else ""
     test(s"${scene.name} runs $seconds s$solver without NaN, its bodies inside ${scene.region}"):
       val staged = scene.build()
       val world = staged.world
-      if soft then world.solver = sims.solver.SoftStep()
+      if soft then world.solver = SoftStep()
       val steps = math.round(seconds / world.timeStep).toInt
       val start = System.nanoTime()
       var firstNaN: Option[String] = None

@@ -44,11 +44,14 @@ object HeadlessRun:
 
   /** Simulates `scene` for `seconds` with `solver`, writing `<name>.gif`, `<name>.png`,
     * `<name>.csv` into `directory` (created if needed; the name ends in `-soft` for the soft
-    * step) and reporting progress on `out`.
+    * step) and reporting progress on `out`. A scene that runs under the soft step only needs
+    * `solver` Soft.
     */
   def run(scene: Scene, seconds: Double, directory: File, out: PrintStream = System.out,
       interactive: Boolean = ProgressBar.stdoutIsTerminal, solver: SolverChoice = SolverChoice.Classic): Result =
     require(seconds >= 0, s"seconds must be at least 0, got $seconds")
+    if !SolverChoice.offeredFor(scene).contains(solver) then
+      throw IllegalArgumentException(s"solver must be Soft for ${scene.name}, which runs under the soft step only, got $solver")
     directory.mkdirs()
     val base = baseName(scene, solver)
     val gifFile = File(directory, s"$base.gif")
@@ -105,11 +108,14 @@ object HeadlessRun:
 
   /** Simulates `scene` for `seconds` twice in lockstep, one world with the classic step and
     * one with the soft step, and writes `<name>-compare.gif` and `<name>-compare.png` into `directory`: the
-    * classic step on the left, the soft step on the right, each labelled.
+    * classic step on the left, the soft step on the right, each labelled. Not for a scene that
+    * runs under the soft step only.
     */
   def compare(scene: Scene, seconds: Double, directory: File, out: PrintStream = System.out,
       interactive: Boolean = ProgressBar.stdoutIsTerminal): Comparison =
     require(seconds >= 0, s"seconds must be at least 0, got $seconds")
+    if scene.softStepOnly then
+      throw IllegalArgumentException(s"scene ${scene.name} runs under the soft step only: it has nothing to compare")
     directory.mkdirs()
     val base = s"${scene.name.toLowerCase}-compare"
     val gifFile = File(directory, s"$base.gif")

@@ -39,21 +39,27 @@ final class SimulationPanel(initialScene: Scene, initialSolver: SolverChoice = S
   /** The running world and action of the scene. */
   def staged: Staged = _staged
 
-  /** The solver stepping the world (and every world loaded or reset after). */
-  def solver: SolverChoice = _solver
+  /** The solver stepping the world: the chosen one, or the soft step for a scene that runs under
+    * it only.
+    */
+  def solver: SolverChoice = SolverChoice.forScene(_scene, _solver)
 
-  /** Switches the running world to `choice`'s solver, from its next step on; scenes loaded or
-    * reset later start with it too.
+  /** The solver chosen, for every scene that runs under either step. */
+  def chosenSolver: SolverChoice = _solver
+
+  /** Chooses `choice`'s solver: the running world switches to it from its next step on (unless
+    * the scene runs under the soft step only: it keeps the soft step), and scenes loaded or reset
+    * later start with it too.
     */
   def solver_=(choice: SolverChoice): Unit =
     _solver = choice
-    _staged.world.solver = choice.solver
+    if !_scene.softStepOnly then _staged.world.solver = choice.solver
     repaint()
 
-  /** A fresh build of `scene`, stepped by the chosen solver. */
+  /** A fresh build of `scene`, stepped by the chosen solver (the soft step if it needs it). */
   private def build(scene: Scene): Staged =
     val built = scene.build()
-    built.world.solver = _solver.solver
+    built.world.solver = SolverChoice.forScene(scene, _solver).solver
     built
 
   /** The current view (sized to the panel when painted). */
@@ -96,7 +102,7 @@ final class SimulationPanel(initialScene: Scene, initialSolver: SolverChoice = S
     val world = _staged.world
     val contacts = world.contacts
     s"""Scene:      ${_scene.name}
-       |Solver:     ${_solver.label}
+       |Solver:     ${solver.label}${if _scene.softStepOnly then " (this scene's only one)" else ""}
        |Bodies:     ${world.bodies.length}
        |Shapes:     ${world.shapes.length}
        |Joints:     ${world.joints.length}
@@ -109,7 +115,7 @@ final class SimulationPanel(initialScene: Scene, initialSolver: SolverChoice = S
   /** Options for the renderer from the toggles. */
   def renderOptions: RenderOptions =
     RenderOptions(contacts = showContacts, boxes = showBoxes, grid = showGrid,
-      caption = f"${_scene.name}  ${_solver.label}  t = ${_staged.world.time}%.2f s")
+      caption = f"${_scene.name}  ${solver.label}  t = ${_staged.world.time}%.2f s")
 
   override def paintComponent(graphics: Graphics): Unit =
     super.paintComponent(graphics)

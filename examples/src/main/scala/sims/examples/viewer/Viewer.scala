@@ -7,7 +7,8 @@ import sims.examples.SolverChoice
 import sims.scenes.{Scene, Scenes}
 
 /** The interactive viewer: a scene chooser, a solver chooser (switching applies to the running
-  * world), start / stop / step / reset, the scene's action, overlay toggles and an info panel
+  * world; disabled, showing the soft step, while a scene that runs under the soft step only is
+  * shown), start / stop / step / reset, the scene's action, overlay toggles and an info panel
   * around a [[SimulationPanel]].
   */
 final class ViewerControls(initialScene: Scene, initialSolver: SolverChoice = SolverChoice.Classic)
@@ -31,11 +32,14 @@ final class ViewerControls(initialScene: Scene, initialSolver: SolverChoice = So
   chooser.setSelectedItem(initialScene.name)
   chooser.addActionListener(_ => Scenes.find(chooser.getSelectedItem.toString).foreach(select))
   solverChooser.setSelectedItem(initialSolver.label)
+  // Set while the chooser is made to show the solver in use (not a choice of the user's).
+  private var showingSolver = false
   solverChooser.addActionListener { _ =>
-    SolverChoice.values.find(_.label == solverChooser.getSelectedItem).foreach { choice =>
-      simulation.solver = choice
-      refreshInfo()
-    }
+    if !showingSolver then
+      SolverChoice.values.find(_.label == solverChooser.getSelectedItem).foreach { choice =>
+        simulation.solver = choice
+        refreshInfo()
+      }
   }
   startStop.addActionListener(_ => setRunning(!running))
   stepButton.addActionListener(_ => { setRunning(false); simulation.step(); refreshInfo() })
@@ -57,6 +61,7 @@ final class ViewerControls(initialScene: Scene, initialSolver: SolverChoice = So
   add(simulation, BorderLayout.CENTER)
   add(side, BorderLayout.EAST)
   updateActionButton()
+  showSolver()
   refreshInfo()
 
   /** Whether the simulation is advancing. */
@@ -76,13 +81,35 @@ final class ViewerControls(initialScene: Scene, initialSolver: SolverChoice = So
   /** The info panel's current text. */
   def infoShown: String = infoText.getText
 
-  /** Chooses a solver as the solver chooser does (for the tests and for scripts). */
-  def chooseSolver(choice: SolverChoice): Unit = solverChooser.setSelectedItem(choice.label)
+  /** Chooses a solver as the solver chooser does (for the tests and for scripts): nothing while
+    * the chooser is disabled.
+    */
+  def chooseSolver(choice: SolverChoice): Unit =
+    if solverChooser.isEnabled then solverChooser.setSelectedItem(choice.label)
+
+  /** Chooses a scene as the scene chooser does (for the tests and for scripts). */
+  def chooseScene(scene: Scene): Unit = chooser.setSelectedItem(scene.name)
+
+  /** Whether the solver chooser may be used (not while a soft-step-only scene is shown). */
+  def solverChoosable: Boolean = solverChooser.isEnabled
+
+  /** The solver the chooser shows. */
+  def solverShown: String = solverChooser.getSelectedItem.toString
 
   private def select(scene: Scene): Unit =
     simulation.load(scene)
     updateActionButton()
+    showSolver()
     refreshInfo()
+
+  /** Shows the solver in use; offers the choice only for a scene that runs under either step. */
+  private def showSolver(): Unit =
+    showingSolver = true
+    try solverChooser.setSelectedItem(simulation.solver.label)
+    finally showingSolver = false
+    val only = simulation.scene.softStepOnly
+    solverChooser.setEnabled(!only)
+    solverChooser.setToolTipText(if only then s"${simulation.scene.name} runs under the soft step only" else null)
 
   private def updateActionButton(): Unit =
     val action = simulation.staged.action

@@ -6,7 +6,7 @@ import javax.imageio.ImageIO
 import java.awt.image.BufferedImage
 import org.scalatest.funsuite.AnyFunSuite
 import sims.examples.SolverChoice
-import sims.scenes.{Spring, Stacking}
+import sims.scenes.{Car, Spring, Stacking}
 
 /** The main job's files: GIF, PNG and CSV of a short run, and the progress bar's two modes. */
 class HeadlessRunSpec extends AnyFunSuite:
@@ -38,6 +38,17 @@ class HeadlessRunSpec extends AnyFunSuite:
     assert(result.steps == 12)
     assert(Seq(result.gif, result.png, result.csv).map(_.getName) == Seq("spring-soft.gif", "spring-soft.png", "spring-soft.csv"))
     assert(log.toString.contains("Solver: soft step (SoftStep("))
+
+  test("a scene that runs under the soft step only runs with it; the classic step and a comparison are refused"):
+    val directory = Files.createTempDirectory("sims-run").toFile
+    val quiet = PrintStream(ByteArrayOutputStream())
+    val result = HeadlessRun.run(Car, 0.2, directory, quiet, interactive = false, solver = SolverChoice.Soft)
+    assert(result.steps == 12 && result.gif.getName == "car-soft.gif")
+    val classic = intercept[IllegalArgumentException](HeadlessRun.run(Car, 0.2, directory, quiet, interactive = false))
+    assert(classic.getMessage == "solver must be Soft for Car, which runs under the soft step only, got Classic")
+    val compared = intercept[IllegalArgumentException](HeadlessRun.compare(Car, 0.2, directory, quiet, interactive = false))
+    assert(compared.getMessage.contains("Car runs under the soft step only"))
+    assert(!java.io.File(directory, "car.gif").exists && !java.io.File(directory, "car-compare.gif").exists)
 
   test("a comparison draws the classic step on the left and the soft step on the right of one GIF and PNG"):
     val directory = Files.createTempDirectory("sims-compare").toFile

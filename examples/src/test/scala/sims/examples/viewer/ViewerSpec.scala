@@ -5,7 +5,7 @@ import java.awt.image.BufferedImage
 import org.scalatest.funsuite.AnyFunSuite
 import sims.examples.SolverChoice
 import sims.examples.render.Renderer
-import sims.scenes.{BallStack, Cannon, Scenes}
+import sims.scenes.{BallStack, Cannon, Car, Scenes}
 import sims.solver.{ClassicStep, SoftStep}
 
 /** The viewer's panels work without a display: they paint off-screen and respond to controls. */
@@ -72,6 +72,29 @@ class ViewerSpec extends AnyFunSuite:
     controls.chooseSolver(SolverChoice.Classic)
     assert(panel.staged.world.solver == ClassicStep)
     assert(ViewerControls(BallStack, SolverChoice.Soft).simulation.staged.world.solver.isInstanceOf[SoftStep])
+
+  test("a soft-step-only scene runs under the soft step: the solver chooser shows it, disabled, and the choice returns with the next scene"):
+    val controls = ViewerControls(sims.scenes.Stacking)
+    val panel = controls.simulation
+    assert(controls.solverChoosable && controls.solverShown == SolverChoice.Classic.label)
+    controls.chooseScene(Car)
+    assert(panel.scene == Car && panel.staged.world.solver.isInstanceOf[SoftStep])
+    assert(panel.solver == SolverChoice.Soft && panel.chosenSolver == SolverChoice.Classic)
+    assert(!controls.solverChoosable && controls.solverShown == SolverChoice.Soft.label)
+    assert(panel.info.contains("Solver:     soft step (this scene's only one)"))
+    val world = panel.staged.world
+    val solver = world.solver
+    controls.chooseSolver(SolverChoice.Classic) // the chooser is disabled: nothing happens
+    panel.solver = SolverChoice.Classic // remembered for the next scene; this one keeps its soft step
+    assert((world.solver eq solver) && controls.solverShown == SolverChoice.Soft.label)
+    for _ <- 1 to 10 do panel.step()
+    panel.reset()
+    assert(panel.staged.world.solver.isInstanceOf[SoftStep])
+    controls.chooseScene(sims.scenes.Stacking)
+    assert(panel.staged.world.solver == ClassicStep && controls.solverChoosable)
+    assert(controls.solverShown == SolverChoice.Classic.label)
+    val opened = ViewerControls(Car, SolverChoice.Classic)
+    assert(opened.simulation.staged.world.solver.isInstanceOf[SoftStep] && !opened.solverChoosable)
 
   test("the info panel counts the solver's contacts"):
     for choice <- SolverChoice.values do

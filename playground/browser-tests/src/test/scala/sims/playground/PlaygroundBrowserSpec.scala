@@ -60,6 +60,24 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
     assert(scenes == Scenes.all.map(_.name))
     assert(Select(element("solver")).getOptions.asScala.map(_.getAttribute("value")).toSeq == Seq("ClassicStep", "SoftStep"))
 
+  test("a scene that runs under the soft step only: the solver chooser shows SoftStep with ClassicStep disabled, and it runs"):
+    choose("Pyramid", "ClassicStep")
+    Select(element("scene")).selectByValue("Car")
+    val solver = Select(element("solver"))
+    assert(solver.getFirstSelectedOption.getAttribute("value") == "SoftStep")
+    assert(solver.getOptions.asScala.filterNot(_.isEnabled).map(_.getAttribute("value")).toSeq == Seq("ClassicStep"))
+    script("window.simsPlayground.step(30)")
+    val world = Scenes.find("Car").get.build().world
+    world.solver = SoftStep()
+    for _ <- 1 to 30 do world.step()
+    assert(script("return window.simsPlayground.fingerprint()") == StateFingerprint(world))
+    // The next scene runs under either step: the choice made before (ClassicStep) holds again.
+    Select(element("scene")).selectByValue("Pyramid")
+    assert(Select(element("solver")).getFirstSelectedOption.getAttribute("value") == "ClassicStep")
+    assert(Select(element("solver")).getOptions.asScala.forall(_.isEnabled))
+    val errors = browser.consoleErrors()
+    assert(errors.isEmpty, errors.mkString("\n"))
+
   test("the canvas is not blank: the scene's bodies cover a good part of it in several colours"):
     choose("Pyramid", "SoftStep")
     val counts = script("""
