@@ -1,6 +1,6 @@
 package sims.bench
 
-import sims.scenes.{LayoutScene, Rain, Scene}
+import sims.scenes.{LayoutScene, Scene}
 import sims.solver.{ClassicStep, Solver, SoftStep}
 
 /** One scene built in one engine: stepped by the benchmark, inspected by the sanity check. */
@@ -57,10 +57,10 @@ object Engine:
   val peers: Seq[Engine] = Seq(JBox2D, Dyn4j)
 
   /** The engines that run a scene: all of them for a layout, SiMS alone (with both solvers)
-    * for any other scene (e.g. the original's BallStack), with the soft step only for a scene
-    * of joints the classic step cannot step (Rain's ragdolls have motors and springs).
+    * for any other scene (e.g. the original's BallStack), with the soft step alone for a
+    * `softStepOnly` scene (Rain's ragdolls have motors and springs).
     */
   def forScene(scene: Scene): Seq[Engine] = scene match
     case _: LayoutScene => values.toSeq
-    case _: Rain => Seq(SimsSoft)
+    case soft if soft.softStepOnly => Seq(SimsSoft)
     case _ => sims

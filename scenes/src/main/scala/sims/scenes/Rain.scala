@@ -24,6 +24,7 @@ final case class Rain(rows: Int = Rain.BenchmarkRows, columns: Int = Rain.Benchm
     else s"rain-${rows}x${columns}x$groupSize"
   def description: String = s"Ragdolls rain onto $rows floors, $columns columns of $groupSize, the oldest dropped again."
   def view: Region = Region(-Span / 2, -1, Span / 2, FloorDistance * (rows - 1) + DropHeight + 2)
+  override def softStepOnly: Boolean = true
 
   /** A rain world: its `postStep` drops a column every `Delay` steps. */
   final class RainWorld extends World:
