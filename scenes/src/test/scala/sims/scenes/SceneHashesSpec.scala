@@ -47,7 +47,7 @@ object SceneHashesSpec:
     "Ragdoll" -> ("268f8d75638fda2c", "51e4e100defde973"),
     "CompositeShape" -> ("749a252abb71bf86", "a12aedc896e9d6b1"),
     "Pyramid" -> ("6fa8bba0b103b7ea", "fb01c81358bcb5b1"),
-    "Pile" -> ("38e39babb7ebe442", "5e0e46bdaa9750b8"),
+    "Pile" -> ("38e39babb7ebe442", "12f7a6249be3daaf"),
     "NewtonsCradle" -> ("2bc439aacf19d9c3", "805ea8aa693d584e"),
     "Dominoes" -> ("33e2a058c6177ac8", "825d31ad1130f5d8"),
     // Its hook pushes bodies at ray-cast hits: the circle cast measured from the line's closest

@@ -56,12 +56,14 @@ class SoftStepWorkersSpec extends AnyFunSuite with Matchers:
     workerThreads().filter(_.endsWith("-of-1")) shouldBe empty
 
   test("200 worlds with workers = 2 share one thread: the live threads stay bounded"):
+    // A pool of an earlier class loader (another project's tests in the same JVM) may be alive.
+    val poolsBefore = workerThreads().count(_.endsWith("-of-2"))
     val before = Thread.activeCount
     for _ <- 1 to 200 do
       val world = Scenes.find("pyramid-20").get.build().world
       world.solver = SoftStep(workers = 2)
       for _ <- 1 to 3 do world.step()
-    workerThreads().count(_.endsWith("-of-2")) shouldBe 1
+    workerThreads().count(_.endsWith("-of-2")) should be <= poolsBefore + 1
     // A thread per world would add 200; other suites' background threads may add a few.
     Thread.activeCount should be < before + 10
 
