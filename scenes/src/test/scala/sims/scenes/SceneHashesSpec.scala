@@ -69,8 +69,8 @@ object SceneHashesSpec:
     "Platformer" -> ("0e01a784731f675e", "b493319b076368c7"),
     "LimitedRagdoll" -> ("fce65789c5e27c8f", "8afb189631c8c37c"),
     "Car" -> (SoftOnly, "9dc81bce019a6309"),
-    "Bridge" -> (SoftOnly, "4fe25df7065540fb"),
-    "Windmill" -> (SoftOnly, "76faf052a2bcccfb")
+    "Bridge" -> (SoftOnly, "2355be36caaee170"),
+    "Windmill" -> (SoftOnly, "3f495a38d688df33")
   )
 
   /** Prints the table above for the current code (run with `scenes/Test/runMain`). */
