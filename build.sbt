@@ -26,9 +26,16 @@ lazy val testDependencies = Seq(
 lazy val root = (project in file("."))
   // `./sbt test` builds and runs them too.
   .aggregate(
-    LocalProject("scenes"), LocalProject("examples"), LocalProject("sweep"), LocalProject("docs"),
-    LocalProject("bench"), LocalProject("simsJS"), LocalProject("scenesJS"), LocalProject("playground"),
-    LocalProject("benchPage"), LocalProject("browserTests")
+    LocalProject("scenes"),
+    LocalProject("examples"),
+    LocalProject("sweep"),
+    LocalProject("docs"),
+    LocalProject("bench"),
+    LocalProject("simsJS"),
+    LocalProject("scenesJS"),
+    LocalProject("playground"),
+    LocalProject("benchPage"),
+    LocalProject("browserTests")
   )
   .settings(
     name := "sims",
@@ -54,23 +61,23 @@ lazy val root = (project in file("."))
   * its own with the same name and the same `forAll` (see PropertyChecks there).
   */
 lazy val jsTestDependencies = Def.setting(Seq(
-  "org.scalatest" %%% "scalatest" % "3.2.18" % Test,
-  "org.scalacheck" %%% "scalacheck" % "1.17.1" % Test
-))
+    "org.scalatest" %%% "scalatest" % "3.2.18" % Test,
+    "org.scalacheck" %%% "scalacheck" % "1.17.1" % Test
+  ))
 
 /** Tests of root and scenes that stay out of the Scala.js builds, and why. */
 lazy val jvmOnlyTests = Set[String](
   "PortableMathSpec.scala", // compares with java.lang.StrictMath, which Scala.js lacks
   "ReadmeSpec.scala", // reads README.md from the disk
-  "SoftBodiesLayoutSpec.scala", "DependenciesSpec.scala", // read the library's sources from the disk
+  "SoftBodiesLayoutSpec.scala",
+  "DependenciesSpec.scala", // read the library's sources from the disk
   "ManifoldSpec.scala", // counts allocated bytes with the JVM's ThreadMXBean
   "SoftStepWorkersSpec.scala", // counts the JVM's threads (Scala.js has one worker)
   "WorldCodecSpec.scala" // reads saved worlds from the class path's resources
 )
 
 /** The sources `project`'s tests share with Scala.js: all but the JVM-only ones. */
-def sharedTests(base: File): Seq[File] =
-  ((base / "src" / "test" / "scala") ** "*.scala").get.filterNot(f => jvmOnlyTests(f.getName))
+def sharedTests(base: File): Seq[File] = ((base / "src" / "test" / "scala") ** "*.scala").get.filterNot(f => jvmOnlyTests(f.getName))
 
 /** The library for Scala.js, from root's own sources (src/main): artifact `sims_sjs1_3`. */
 lazy val simsJS = (project in file("js"))
@@ -156,10 +163,9 @@ lazy val examples = (project in file("examples"))
   * with ScalaTest's for Scala 3 on one classpath; Spark's core does not need it to run jobs.
   */
 val sparkVersion = "4.2.0"
-def spark(module: String): ModuleID =
-  ("org.apache.spark" %% module % sparkVersion)
-    .cross(CrossVersion.for3Use2_13)
-    .exclude("org.scala-lang.modules", "scala-xml_2.13")
+def spark(module: String): ModuleID = ("org.apache.spark" %% module % sparkVersion)
+  .cross(CrossVersion.for3Use2_13)
+  .exclude("org.scala-lang.modules", "scala-xml_2.13")
 
 /** What Spark opens of the JDK for itself (its launcher passes the same list). */
 val sparkJavaOptions = Seq(
@@ -323,7 +329,8 @@ lazy val playground = (project in file("playground"))
   * controls and mouse, and its fingerprints against the JVM's. Canceled, and counted as skipped
   * by .ci/run, where Chromium is not installed.
   */
-lazy val browserBench = taskKey[Unit]("runs the browser benchmark page in headless Chromium; writes the Browser section of docs/src/performance.md (then ./sbt bookRender)")
+lazy val browserBench = taskKey[Unit](
+  "runs the browser benchmark page in headless Chromium; writes the Browser section of docs/src/performance.md (then ./sbt bookRender)")
 
 lazy val browserTests = (project in file("playground/browser-tests"))
   .dependsOn(scenes % "test->test")

@@ -18,7 +18,7 @@ object Release {
     val addressLike = """[a-z+]+://(?:[^@/]+@)?([^/:]+)(?::\d+)?/(.+)""".r
     remote
       .collect {
-        case scpLike(host, path)     => (host, path)
+        case scpLike(host, path) => (host, path)
         case addressLike(host, path) => (host, path)
       }
       .map { case (host, path) => (host, path.stripSuffix("/").stripSuffix(".git")) }

@@ -21,8 +21,9 @@ class DependenciesSpec extends AnyFunSuite:
     * comments left out).
     */
   private def uses(file: Path): Set[String] =
-    val code = Files.readAllLines(file).asScala.map(_.trim).filterNot(l => l.startsWith("*") || l.startsWith("/*") ||
-      l.startsWith("//"))
+    val code = Files.readAllLines(file).asScala.map(_.trim).filterNot(l =>
+      l.startsWith("*") || l.startsWith("/*") ||
+        l.startsWith("//"))
     val name = raw"\bsims\.(geometry|dynamics|collision|solver|prefabs|io)\b".r
     code.flatMap(line => name.findAllMatchIn(line).map(_.group(1))).toSet
 

@@ -8,5 +8,4 @@ import sims.dynamics.Shape
   */
 private[sims] object PairKey:
   /** The key of the pair (first, second). */
-  def of(first: Shape, second: Shape): Long =
-    (first.worldIndex.toLong << 32) | (second.worldIndex.toLong & 0xffffffffL)
+  def of(first: Shape, second: Shape): Long = (first.worldIndex.toLong << 32) | (second.worldIndex.toLong & 0xffffffffL)

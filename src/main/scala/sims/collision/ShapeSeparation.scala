@@ -128,8 +128,7 @@ private[sims] final class ShapeSeparation:
   /** True if the segments cross each other (each one's ends strictly on both sides of the other). */
   private def crossing(ax: Double, ay: Double, bx: Double, by: Double, cx: Double, cy: Double, dx: Double,
       dy: Double): Boolean =
-    def side(px: Double, py: Double, qx: Double, qy: Double, rx: Double, ry: Double): Double =
-      (qx - px) * (ry - py) - (qy - py) * (rx - px)
+    def side(px: Double, py: Double, qx: Double, qy: Double, rx: Double, ry: Double): Double = (qx - px) * (ry - py) - (qy - py) * (rx - px)
     val c1 = side(ax, ay, bx, by, cx, cy)
     val c2 = side(ax, ay, bx, by, dx, dy)
     val c3 = side(cx, cy, dx, dy, ax, ay)

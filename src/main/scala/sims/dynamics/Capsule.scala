@@ -20,8 +20,10 @@ final class Capsule(val halfLength: Double, val radius: Double, val density: Dou
     val rectangleMass = density * 4 * halfLength * radius
     val discMass = density * math.Pi * radius * radius
     val c = 4 * radius / (3 * math.Pi)
-    rectangleMass * (4 * halfLength * halfLength + 4 * radius * radius) / 12 +
-      discMass * (radius * radius / 2 + halfLength * halfLength + 2 * halfLength * c)
+    rectangleMass *
+      (4 * halfLength * halfLength + 4 * radius * radius) / 12 +
+      discMass *
+      (radius * radius / 2 + halfLength * halfLength + 2 * halfLength * c)
 
   override def toString: String =
     s"Capsule(halfLength = $halfLength, radius = $radius, density = $density, pos = $pos)"

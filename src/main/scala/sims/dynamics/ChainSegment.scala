@@ -44,7 +44,8 @@ object ChainSegment:
   def chain(points: Seq[Vector2D], loop: Boolean = false): Seq[ChainSegment] =
     val minimum = if loop then 3 else 2
     if points.length < minimum then
-      throw IllegalArgumentException(s"points must hold at least $minimum points${if loop then " for a loop" else ""}, got ${points.length}")
+      throw IllegalArgumentException(
+        s"points must hold at least $minimum points${if loop then " for a loop" else ""}, got ${points.length}")
     for p <- points do Vector2D.requireFinite("points", p)
     val n = points.length
     val count = if loop then n else n - 1

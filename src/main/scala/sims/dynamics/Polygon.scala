@@ -65,8 +65,7 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
     refresh()
     ArraySeq.tabulate(count)(i => Vector2D(worldX(i), worldY(i)))
 
-  override private[sims] val boundingRadius: Double =
-    (0 until count).map(i => PortableMath.hypot(localX(i), localY(i))).max
+  override private[sims] val boundingRadius: Double = (0 until count).map(i => PortableMath.hypot(localX(i), localY(i))).max
 
   override private[sims] def vertexCount: Int = count
   // The library polygon's own arrays, current: no copy.

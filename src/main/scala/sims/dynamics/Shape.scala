@@ -162,7 +162,7 @@ abstract class Shape:
     val dy = to.y - from.y
     if castRay(from.x, from.y, dx, dy, 1, hit) then
       Some(RayHit(this, Vector2D(from.x + hit.fraction * dx, from.y + hit.fraction * dy),
-        Vector2D(hit.normalX, hit.normalY), hit.fraction))
+          Vector2D(hit.normalX, hit.normalY), hit.fraction))
     else None
 
   /** The library's allocation-free ray cast (see [[sims.geometry.RayMath]]): fills `hit` and is

@@ -13,8 +13,7 @@ package sims.geometry
   */
 object PortableMath:
   /** The upper 32 bits of `x`: sign, exponent and the first 20 bits of the fraction. */
-  private[geometry] inline def highWord(x: Double): Int =
-    (java.lang.Double.doubleToRawLongBits(x) >>> 32).toInt
+  private[geometry] inline def highWord(x: Double): Int = (java.lang.Double.doubleToRawLongBits(x) >>> 32).toInt
 
   /** The lower 32 bits of `x`'s fraction. */
   private[geometry] inline def lowWord(x: Double): Int = java.lang.Double.doubleToRawLongBits(x).toInt
@@ -40,12 +39,11 @@ object PortableMath:
     else AngleReduction.sineOf(x, 1)
 
   /** sin(n * pi/2 + head + tail) for |head + tail| <= pi/4. */
-  private[geometry] def sineOfReduced(n: Int, head: Double, tail: Double): Double =
-    (n & 3) match
-      case 0 => kernelSin(head, tail, exact = false)
-      case 1 => kernelCos(head, tail)
-      case 2 => -kernelSin(head, tail, exact = false)
-      case _ => -kernelCos(head, tail)
+  private[geometry] def sineOfReduced(n: Int, head: Double, tail: Double): Double = (n & 3) match
+    case 0 => kernelSin(head, tail, exact = false)
+    case 1 => kernelCos(head, tail)
+    case 2 => -kernelSin(head, tail, exact = false)
+    case _ => -kernelCos(head, tail)
 
   // Sine on [-pi/4, pi/4]: x + x^3 * (S1 + x^2 * polynomial), a minimax fit of degree 13.
   private val S1 = -1.66666666666666324348e-01
@@ -81,7 +79,8 @@ object PortableMath:
     if ax < TwoToMinus27 then 1.0
     else
       val z = x * x
-      val r = z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))))
+      val r = z *
+        (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))))
       if ax < PointThreeBound then 1.0 - (0.5 * z - (z * r - x * tail))
       else
         // 1 - z/2 loses bits for larger x: take a round part q of z/2 off first, exactly.
@@ -137,7 +136,8 @@ object PortableMath:
           t = -1.0 / t
       val z = t * t
       val w = z * z
-      val s1 = z * (T0 + w * (T2 + w * (T4 + w * (T6 + w * (T8 + w * T10)))))
+      val s1 = z *
+        (T0 + w * (T2 + w * (T4 + w * (T6 + w * (T8 + w * T10)))))
       val s2 = w * (T1 + w * (T3 + w * (T5 + w * (T7 + w * T9))))
       if id < 0 then t - t * (s1 + s2)
       else
@@ -214,7 +214,8 @@ object PortableMath:
 
   /** R(z) = p(z) / q(z) of the arc sine's expansion asin(x) = x + x^3 R(x^2). */
   private def arcSineRatio(z: Double): Double =
-    val p = z * (P0 + z * (P1 + z * (P2 + z * (P3 + z * (P4 + z * P5)))))
+    val p = z *
+      (P0 + z * (P1 + z * (P2 + z * (P3 + z * (P4 + z * P5)))))
     val q = 1.0 + z * (Q1 + z * (Q2 + z * (Q3 + z * Q4)))
     p / q
 

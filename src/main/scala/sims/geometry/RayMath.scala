@@ -98,7 +98,9 @@ private[sims] object RayMath:
       else
         val ex = bx - ax
         val ey = by - ay
-        val along = ((x1 + t * dx - ax) * ex + (y1 + t * dy - ay) * ey) / (ex * ex + ey * ey)
+        val along =
+          ((x1 + t * dx - ax) * ex + (y1 + t * dy - ay) * ey) /
+            (ex * ex + ey * ey)
         if along < 0 || along > 1 then false else hit.set(t, nx, ny)
 
   /** A segment from (ax, ay) to (bx, by) (not a point), hit from either side; the normal faces the
@@ -110,7 +112,7 @@ private[sims] object RayMath:
     val nx = (by - ay) / length
     val ny = -(bx - ax) / length
     side(ax, ay, bx, by, nx, ny, x1, y1, dx, dy, maxFraction, hit) ||
-      side(ax, ay, bx, by, -nx, -ny, x1, y1, dx, dy, maxFraction, hit)
+    side(ax, ay, bx, by, -nx, -ny, x1, y1, dx, dy, maxFraction, hit)
 
   /** The points within `radius` of the segment (ax, ay) - (bx, by): a rectangle along it and a
     * disc at each end. From outside, the ray first enters the union where it first enters one

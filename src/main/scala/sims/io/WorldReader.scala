@@ -3,8 +3,10 @@ package sims.io
 import java.io.{ByteArrayInputStream, DataInputStream, EOFException}
 import sims.collision.{GridDetector, PairKey, PairTracker}
 import sims.dynamics.{Body, Capsule, ChainSegment, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
-import sims.dynamics.joints.{DistanceJoint, Joint, JointLimits, JointMotor, JointSpring, MotorJoint, MouseJoint,
-  PrismaticJoint, RevoluteJoint, SpringJoint, WeldJoint, WheelJoint}
+import sims.dynamics.joints.{
+  DistanceJoint, Joint, JointLimits, JointMotor, JointSpring, MotorJoint, MouseJoint, PrismaticJoint, RevoluteJoint, SpringJoint, WeldJoint,
+  WheelJoint
+}
 import sims.geometry.Vector2D
 import sims.solver.{ClassicStep, SoftStep}
 import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
@@ -168,9 +170,12 @@ private[io] object WorldReader:
 
   /** A joint's limits, motor and spring as `WorldWriter.parts` wrote them. */
   private def parts(in: DataInputStream): (Option[JointLimits], Option[JointMotor], Option[JointSpring]) =
-    val limits = if in.readBoolean() then { val lower = in.readDouble(); Some(JointLimits(lower, in.readDouble())) } else None
-    val motor = if in.readBoolean() then { val speed = in.readDouble(); Some(JointMotor(speed, in.readDouble())) } else None
-    val spring = if in.readBoolean() then { val hertz = in.readDouble(); Some(JointSpring(hertz, in.readDouble())) } else None
+    val limits = if in.readBoolean() then { val lower = in.readDouble(); Some(JointLimits(lower, in.readDouble())) }
+    else None
+    val motor = if in.readBoolean() then { val speed = in.readDouble(); Some(JointMotor(speed, in.readDouble())) }
+    else None
+    val spring = if in.readBoolean() then { val hertz = in.readDouble(); Some(JointSpring(hertz, in.readDouble())) }
+    else None
     (limits, motor, spring)
 
   private def joint(in: DataInputStream, world: World, bodies: IndexedSeq[Body], version: Int): Joint =
@@ -184,7 +189,8 @@ private[io] object WorldReader:
     // The joint is made again with its bodies where they were when it was first made: its
     // anchors then have the same offsets and rotations to the bit.
     def atOrigin[J](make: => J): J =
-      val saved = Array(node2.x, node2.y, node2.angle) ++ (if node1 == null then Array.empty[Double] else Array(node1.x, node1.y, node1.angle))
+      val saved = Array(node2.x, node2.y, node2.angle) ++
+        (if node1 == null then Array.empty[Double] else Array(node1.x, node1.y, node1.angle))
       if node1 != null then { node1.x = placement(0); node1.y = placement(1); node1.angle = placement(2) }
       node2.x = placement(3); node2.y = placement(4); node2.angle = placement(5)
       try make

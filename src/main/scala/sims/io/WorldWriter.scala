@@ -3,8 +3,10 @@ package sims.io
 import java.io.{ByteArrayOutputStream, DataOutputStream}
 import sims.collision.{GridDetector, PairTracker}
 import sims.dynamics.{Body, Capsule, ChainSegment, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
-import sims.dynamics.joints.{DistanceJoint, Joint, JointLimits, JointMotor, JointOrigin, JointSpring, MotorJoint, MouseJoint,
-  PrismaticJoint, RevoluteJoint, SpringJoint, WeldJoint, WheelJoint}
+import sims.dynamics.joints.{
+  DistanceJoint, Joint, JointLimits, JointMotor, JointOrigin, JointSpring, MotorJoint, MouseJoint, PrismaticJoint, RevoluteJoint,
+  SpringJoint, WeldJoint, WheelJoint
+}
 import sims.solver.{ClassicStep, SoftStep}
 import sims.solver.soft.{ContactTable, Contacts, SoftWorkspace}
 import sims.solver.soft.joints.JointConstraint

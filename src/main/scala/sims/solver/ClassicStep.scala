@@ -30,22 +30,22 @@ object ClassicStep extends Solver:
     val bullets = world.bulletCount > 0
     if bullets then bulletsOf(world).begin(world)
     world.stage = "advance time"
-    advanceTime(world)                    // phase 1
+    advanceTime(world) // phase 1
     world.stage = "joint forces"
-    applyJointForces(world)               // phase 2
+    applyJointForces(world) // phase 2
     world.guard("joint forces", Checked.Forces)
     world.stage = "integration of accelerations"
-    integrateAccelerations(world, h)      // phase 3
+    integrateAccelerations(world, h) // phase 3
     world.guard("integration of accelerations", Checked.Velocities)
     world.stage = "velocity correction"
-    correctVelocities(world, h)           // phase 4
+    correctVelocities(world, h) // phase 4
     world.guard("velocity correction", Checked.Velocities)
     world.stage = "integration of velocities"
-    integrateVelocities(world, h)         // phase 5
+    integrateVelocities(world, h) // phase 5
     world.guard("integration of velocities", Checked.Positions)
     if world.enablePositionCorrection then
       world.stage = "position correction"
-      correctPositions(world, h)          // phase 6
+      correctPositions(world, h) // phase 6
       world.guard("position correction", Checked.Positions)
       if world.enableCollisionDetection then reportTouching(world)
     if bullets then
@@ -68,12 +68,13 @@ object ClassicStep extends Solver:
     */
   def contacts(world: World): IndexedSeq[Contact] =
     if !world.workspace(classOf[ContactSolver], ContactSolver()).detected then IndexedSeq.empty
-    else world.detector.collisions.iterator.map { c =>
-      val points = c.points.toIndexedSeq
-      val separation = -Collision.overlapAlong(c.shape1, c.shape2, c.normal.x, c.normal.y)
-      val zeros = IndexedSeq.fill(points.length)(0.0)
-      Contact(c.shape1, c.shape2, c.normal, points, IndexedSeq.fill(points.length)(separation), zeros, zeros, zeros)
-    }.toIndexedSeq
+    else
+      world.detector.collisions.iterator.map { c =>
+        val points = c.points.toIndexedSeq
+        val separation = -Collision.overlapAlong(c.shape1, c.shape2, c.normal.x, c.normal.y)
+        val zeros = IndexedSeq.fill(points.length)(0.0)
+        Contact(c.shape1, c.shape2, c.normal, points, IndexedSeq.fill(points.length)(separation), zeros, zeros, zeros)
+      }.toIndexedSeq
 
   private def advanceTime(world: World): Unit = world.advanceTime()
 

@@ -207,11 +207,11 @@ final case class SoftStep(
   private def resting(world: World, workspace: SoftWorkspace): Boolean =
     val bodies = workspace.bodies
     if !bodies.anyAsleep || !world.enableCollisionDetection || workspace.collidedRevision != world.revision ||
-        world.bulletCount > 0 then false
+      world.bulletCount > 0 then false
     else
       var i = 0
       while i < bodies.count && bodies.invMass(i) == 0 && !bodies.bodies(i).movedByUser &&
-          !bodies.bodies(i).movesItself do i += 1
+        !bodies.bodies(i).movesItself do i += 1
       i == bodies.count
 
   private def findContacts(world: World, workspace: SoftWorkspace): Unit =

@@ -29,7 +29,8 @@ class PublicSolverSpec extends AnyFunSuite with Matchers:
     // Explicit Euler: x(n+1) = x(n) + h v(n), v(n+1) = v(n) + h g.
     val h = world.timeStep
     val g = world.gravity.y
-    ball.pos.y shouldBe (10 + h * 0 + h * (h * g) + h * (2 * h * g)) +- 1e-12
+    ball.pos.y shouldBe
+      (10 + h * 0 + h * (h * g) + h * (2 * h * g)) +- 1e-12
     ball.linearVelocity.y shouldBe (3 * h * g) +- 1e-12
     world.workspace(classOf[Steps], Steps()).count shouldBe 3
   }

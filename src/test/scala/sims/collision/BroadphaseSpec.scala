@@ -74,12 +74,13 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
   }
 
   test("a box query finds exactly the shapes whose bounds overlap the box, in world order") {
-    val box = for
-      x <- Gen.choose(-25.0, 25.0)
-      y <- Gen.choose(-25.0, 25.0)
-      w <- Gen.oneOf(Gen.choose(0.0, 1.0), Gen.choose(1.0, 40.0))
-      h <- Gen.choose(0.0, 10.0)
-    yield sims.geometry.AABB(Vector2D(x, y), Vector2D(x + w, y + h))
+    val box =
+      for
+        x <- Gen.choose(-25.0, 25.0)
+        y <- Gen.choose(-25.0, 25.0)
+        w <- Gen.oneOf(Gen.choose(0.0, 1.0), Gen.choose(1.0, 40.0))
+        h <- Gen.choose(0.0, 10.0)
+      yield sims.geometry.AABB(Vector2D(x, y), Vector2D(x + w, y + h))
     forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0), Gen.listOfN(5, box), minSuccessful(30)) { (shapes, side, boxes) =>
       val world = scene(shapes, side)
       world.shapes.head.collidable = false // left out of queries too
@@ -105,8 +106,9 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     val offered = scala.collection.mutable.ArrayBuffer.empty[Shape]
     def walk(fromX: Double, fromY: Double, toX: Double, toY: Double, stopAt: Double): Unit =
       offered.clear()
-      grid.rayCast(fromX, fromY, toX, toY, new sims.collision.broadphase.Broadphase.RayVisitor:
-        def visit(shape: Shape, limit: Double): Double = { offered += shape; math.min(limit, stopAt) })
+      grid.rayCast(fromX, fromY, toX, toY,
+        new sims.collision.broadphase.Broadphase.RayVisitor:
+          def visit(shape: Shape, limit: Double): Double = { offered += shape; math.min(limit, stopAt) })
     // Along the row y = 0.3 across the whole grid: its 100 balls and none of the other 9,900 far from it.
     walk(-1, 0.3, 31, 0.3, 1)
     offered.size shouldBe offered.distinct.size

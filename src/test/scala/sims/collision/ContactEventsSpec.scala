@@ -287,11 +287,12 @@ object ContactEventsSpec:
     "its category leaves the other's mask" -> ((_, ground, box) => { box.categoryBits = 2; ground.maskBits = ~2 }),
     "the two join the same negative group" -> ((_, ground, box) => { box.groupIndex = -3; ground.groupIndex = -3 }),
     "it becomes a sensor" -> ((_, _, box) => box.sensor = true),
-    "a joint keeps the two bodies apart" -> ((world, ground, box) => {
-      val hinge = RevoluteJoint(ground.body, box.body, box.pos)
-      hinge.collideConnected = false
-      world += hinge
-    }),
+    "a joint keeps the two bodies apart" ->
+      ((world, ground, box) => {
+        val hinge = RevoluteJoint(ground.body, box.body, box.pos)
+        hinge.collideConnected = false
+        world += hinge
+      }),
     "it becomes transient to the other" -> ((_, ground, box) => box.transientShapes = Set(ground)),
     "collision detection is switched off" -> ((world, _, _) => world.enableCollisionDetection = false),
     "both bodies become fixed" -> ((_, _, box) => box.body.fixed = true))

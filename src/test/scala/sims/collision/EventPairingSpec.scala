@@ -139,8 +139,9 @@ object EventPairingSpec:
       if random.nextInt(6) != 0 then return 0
       random.nextInt(11) match
         case 0 => anyFree().foreach { b => // leaves, with its joints
-          joints.filter(j => (j.node1 eq b) || (j.node2 eq b)).foreach { j => world -= j; joints -= j }
-          world -= b; free -= b; removed += b }
+            joints.filter(j => (j.node1 eq b) || (j.node2 eq b)).foreach { j => world -= j; joints -= j }
+            world -= b; free -= b; removed += b
+          }
         case 1 => if removed.nonEmpty then { val b = removed.remove(0); world += b; free += b }
         case 2 => anyFree().foreach(b => b.shapes.head.collidable = !b.shapes.head.collidable)
         case 3 => anyFree().foreach(b => b.shapes.head.sensor = !b.shapes.head.sensor)
@@ -149,10 +150,10 @@ object EventPairingSpec:
         case 6 => world.solver = if world.solver == ClassicStep then SoftStep() else ClassicStep
         case 7 => world.enableCollisionDetection = false
         case 8 => for a <- anyFree(); b <- anyFree() if a ne b do
-          val joint = DistanceJoint(a, a.pos, b, b.pos)
-          joint.collideConnected = false
-          world += joint
-          joints += joint
+            val joint = DistanceJoint(a, a.pos, b, b.pos)
+            joint.collideConnected = false
+            world += joint
+            joints += joint
         case 9 => anyFree().foreach(b => b.fixed = !b.fixed)
         case _ => anyFree().foreach(b => b.bullet = !b.bullet)
       1
@@ -181,7 +182,8 @@ object EventPairingSpec:
       val shapes = world.shapes
       (for s <- shapes if s.sensor; v <- shapes if PairFilter.sensorSees(s, v) yield
         val d = ManifoldFixtures.distance(s, v)
-        (s, v) -> (d, grazes(s, v))).collect { case (pair, (d, graze)) if d == 0 || graze => pair -> !graze }.toMap
+        (s, v) -> (d, grazes(s, v))
+      ).collect { case (pair, (d, graze)) if d == 0 || graze => pair -> !graze }.toMap
 
     /** True if the shapes are within 1e-9 m of touching, from either side. */
     private def grazes(a: Shape, b: Shape): Boolean =

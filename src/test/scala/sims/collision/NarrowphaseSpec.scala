@@ -146,7 +146,6 @@ class NarrowphaseSpec extends AnyFunSuite with Matchers:
     math.abs(collision.normal.x) shouldBe 1.0 +- 1e-12
   }
 
-
   /** A box that is not a library Polygon: it gives only `vertices`, so the narrowphase reads it
     * through ConvexPolygon's default accessors.
     */

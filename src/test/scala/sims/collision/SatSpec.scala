@@ -41,8 +41,7 @@ class SatSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     found
 
   /** The least overlap over all side normals: how deep the polygons overlap. */
-  private def depth(a: Polygon, b: Polygon): Double =
-    (a.sides ++ b.sides).map(_.n0).map(n => a.project(n).overlap(b.project(n))).min
+  private def depth(a: Polygon, b: Polygon): Double = (a.sides ++ b.sides).map(_.n0).map(n => a.project(n).overlap(b.project(n))).min
 
   test("SAT agrees with sampled points on random convex pairs") {
     forAll(polygons, polygons, minSuccessful(300)) { (a, b) =>

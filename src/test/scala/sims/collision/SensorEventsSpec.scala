@@ -140,11 +140,12 @@ class SensorEventsSpec extends AnyFunSuite with Matchers:
         val world = World()
         world.solver = solver
         world += fixedBox(0, -0.5, 5, 0.5).body
-        val balls = for i <- 0 until 12 yield
-          val ball = Circle(0.2, 1)
-          ball.pos = Vector2D(0.13 * (i % 4) - 0.2, 0.3 + 0.42 * i)
-          world += ball.asBody
-          ball
+        val balls =
+          for i <- 0 until 12 yield
+            val ball = Circle(0.2, 1)
+            ball.pos = Vector2D(0.13 * (i % 4) - 0.2, 0.3 + 0.42 * i)
+            world += ball.asBody
+            ball
         if withSensors then
           val zone = fixedBox(0, 1, 5, 1)
           zone.sensor = true
@@ -162,16 +163,18 @@ class SensorEventsSpec extends AnyFunSuite with Matchers:
   test("sensor events come in world order, sensor first, then visitor") {
     val world = World()
     world.gravity = Vector2D.Null
-    val balls = for i <- 0 until 4 yield
-      val ball = Circle(0.2, 1)
-      ball.pos = Vector2D(i * 0.3, 0)
-      world += ball.asBody
-      ball
-    val zones = for i <- 0 until 2 yield
-      val zone = fixedBox(0.45, 0, 1, 1)
-      zone.sensor = true
-      world += zone.body
-      zone
+    val balls =
+      for i <- 0 until 4 yield
+        val ball = Circle(0.2, 1)
+        ball.pos = Vector2D(i * 0.3, 0)
+        world += ball.asBody
+        ball
+    val zones =
+      for i <- 0 until 2 yield
+        val zone = fixedBox(0.45, 0, 1, 1)
+        zone.sensor = true
+        world += zone.body
+        zone
     world.step()
     world.sensorEvents.begins.map(b => (b.sensor, b.visitor)) shouldBe
       (for z <- zones; b <- balls yield (z, b))

@@ -44,11 +44,12 @@ class ShapeQueriesSpec extends AnyFunSuite with Matchers with ScalaCheckProperty
   }
 
   test("box queries and point queries find exactly the shapes brute force finds, in world order") {
-    val box = for
-      corner <- point
-      w <- Gen.oneOf(Gen.choose(0.0, 1.0), Gen.choose(1.0, 60.0))
-      h <- Gen.choose(0.0, 10.0)
-    yield AABB(corner, corner + Vector2D(w, h))
+    val box =
+      for
+        corner <- point
+        w <- Gen.oneOf(Gen.choose(0.0, 1.0), Gen.choose(1.0, 60.0))
+        h <- Gen.choose(0.0, 10.0)
+      yield AABB(corner, corner + Vector2D(w, h))
     forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0), Gen.listOfN(5, box), Gen.listOfN(5, point), minSuccessful(30)) {
       (shapes, side, boxes, points) =>
         val world = scene(shapes, side)

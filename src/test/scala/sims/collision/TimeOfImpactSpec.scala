@@ -72,7 +72,7 @@ class TimeOfImpactSpec extends AnyFunSuite with Matchers with ScalaCheckProperty
     val separation = ShapeSeparation()
     var searches, short = 0
     forAll(shapes, Gen.choose(-1.0, 1.0), Gen.choose(-1.0, 1.0), Gen.choose(1.0, 8.0), Gen.choose(-2.0, 2.0),
-        Gen.choose(-12.0, 12.0), minSuccessful(1000)) { (shape, y0, angle0, dx, dy, dAngle) =>
+      Gen.choose(-12.0, 12.0), minSuccessful(1000)) { (shape, y0, angle0, dx, dy, dAngle) =>
       val fixed = wall()
       val b = body(shape, -1.5, y0, angle0)
       val x0 = b.pos.x

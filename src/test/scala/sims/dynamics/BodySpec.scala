@@ -25,7 +25,8 @@ class BodySpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     b.pos.y shouldBe 0.0
     val dc = b.pos.x
     val dr = 2 - b.pos.x
-    b.I shouldBe (mc / 2 + mc * dc * dc + mr * 8 / 12 + mr * dr * dr) +- 1e-12
+    b.I shouldBe
+      (mc / 2 + mc * dc * dc + mr * 8 / 12 + mr * dr * dr) +- 1e-12
     b.rotation shouldBe 0.0 // whatever the shapes' rotations
     b.shapes.map(_.body).distinct shouldBe Seq(b)
   }

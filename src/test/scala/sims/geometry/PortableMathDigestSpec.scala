@@ -44,8 +44,7 @@ object PortableMathDigestSpec:
         near + ((bits.next() & 15) - 8).toDouble * math.ulp(near)
     if (bits.next() & 1) == 0 then x else -x
 
-  private def fold(h: Long, value: Double): Long =
-    (h ^ java.lang.Double.doubleToLongBits(value)) * 0x100000001b3L
+  private def fold(h: Long, value: Double): Long = (h ^ java.lang.Double.doubleToLongBits(value)) * 0x100000001b3L
 
   private def hex(h: Long): String =
     val digits = java.lang.Long.toHexString(h)

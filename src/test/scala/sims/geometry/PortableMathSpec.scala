@@ -163,4 +163,4 @@ object PortableMathSpec:
 /** Records PortableMathDigestSpec's fingerprints from StrictMath (run with `Test/runMain`). */
 @main def recordPortableMathDigests(): Unit =
   println(PortableMathDigestSpec.digests(StrictMath.sin, StrictMath.cos, StrictMath.atan2, StrictMath.acos,
-    StrictMath.hypot).map(d => s"\"$d\"").mkString("Seq(", ", ", ")"))
+      StrictMath.hypot).map(d => s"\"$d\"").mkString("Seq(", ", ", ")"))

@@ -41,10 +41,14 @@ class NetSpec extends AnyFunSuite:
     val corner = net.node(0, 9).pos
     assert(corner == Vector2D(0, 9 * sims.Defaults.NetSpacing), "the fixed corner stays")
     assert(net.node(9, 0).pos.y < corner.y - 1, "the free corner has fallen below the fixed one")
-    val worstStretch = net.joints.map { case j: DistanceJoint => math.abs((j.connection2 - j.connection1).length - j.distance) / j.distance; case _ => 0.0 }.max
+    val worstStretch = net.joints.map {
+      case j: DistanceJoint => math.abs((j.connection2 - j.connection1).length - j.distance) / j.distance; case _ => 0.0
+    }.max
     // With 10 solver iterations the links near the fixed corner, which carry the other 99
     // nodes, stretch a lot while the net swings (47 % measured after 3 s); the bound pins that
     // they stretch, but do not tear apart.
     assert(worstStretch < 0.6, s"links stretched by up to ${worstStretch * 100} %")
-    val meanStretch = net.joints.map { case j: DistanceJoint => math.abs((j.connection2 - j.connection1).length - j.distance) / j.distance; case _ => 0.0 }.sum / net.joints.size
+    val meanStretch = net.joints.map {
+      case j: DistanceJoint => math.abs((j.connection2 - j.connection1).length - j.distance) / j.distance; case _ => 0.0
+    }.sum / net.joints.size
     assert(meanStretch < 0.1, s"links stretched by ${meanStretch * 100} % on average")

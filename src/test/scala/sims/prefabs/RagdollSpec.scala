@@ -88,7 +88,8 @@ class RagdollSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCheck
       (throwSpeed, spin, height) =>
         val (ragdoll, worstSeparation, lateKinetic, released) = fall(throwSpeed, spin, height, iterations = 20)
         val lowest = ragdoll.shapes.map(_.AABB.minVertex.y).min
-        info(f"thrown at $throwSpeed%.2f m/s, spin $spin%.2f rad/s, from $height%.2f m: largest joint separation $worstSeparation%.2e m; kinetic energy in the last second at most $lateKinetic%.3f J of $released%.0f J released; lowest point $lowest%.4f m")
+        info(
+          f"thrown at $throwSpeed%.2f m/s, spin $spin%.2f rad/s, from $height%.2f m: largest joint separation $worstSeparation%.2e m; kinetic energy in the last second at most $lateKinetic%.3f J of $released%.0f J released; lowest point $lowest%.4f m")
         worstSeparation should be < 0.02
         lateKinetic should be < 0.01 * released
         ragdoll.headTorso.pos.y should be < 0.6 // lies or sits on the floor (standing: about 1.2)

@@ -63,8 +63,9 @@ class ContinuousCollisionSpec extends AnyFunSuite with Matchers:
 
   test("shots into a closed wedge at 100 m/s: the soft step alone lets some through, as bullets none pass") {
     for solver <- Seq(ClassicStep, SoftStep()) do
-      val results = for angle <- (0 until 30).map(i => -0.6 + i * 0.04); radius <- Seq(0.01, 0.05, 0.1) yield
-        (intoWedge(solver, angle, radius, bullet = false), intoWedge(solver, angle, radius, bullet = true))
+      val results =
+        for angle <- (0 until 30).map(i => -0.6 + i * 0.04); radius <- Seq(0.01, 0.05, 0.1)
+        yield (intoWedge(solver, angle, radius, bullet = false), intoWedge(solver, angle, radius, bullet = true))
       val alone = results.count(_._1)
       info(s"$solver: $alone of ${results.size} through without bullet")
       alone should be > 0
@@ -165,11 +166,12 @@ object ContinuousCollisionSpec:
     world += body
     var sweeps = 0
     var passed = false
-    val path = for _ <- 1 to 60 yield
-      world.step()
-      sweeps += world.workspace(classOf[ContinuousCollision], ContinuousCollision()).stopped
-      if body.pos.x > 0 then passed = true
-      body.pos
+    val path =
+      for _ <- 1 to 60 yield
+        world.step()
+        sweeps += world.workspace(classOf[ContinuousCollision], ContinuousCollision()).stopped
+        if body.pos.x > 0 then passed = true
+        body.pos
     Shot(passed, body.linearVelocity.x < 0, sweeps, path)
 
   /** Fires a ball of `radius` at 100 m/s, `angle` from the x axis, into a closed wedge of two

@@ -42,7 +42,8 @@ class SoftJointsSpec extends AnyFunSuite with Matchers:
         worstAngle = math.max(worstAngle, math.abs(joint.angleError))
       val acceleration = -(speeds(119) - speeds(59)) / (60 * w.timeStep)
       val expected = 9.81 * math.sin(slope)
-      info(f"direct = $direct: acceleration $acceleration%.6f m/s^2 (expected $expected%.6f), line error $worstLine%.1e m, angle error $worstAngle%.1e rad")
+      info(
+        f"direct = $direct: acceleration $acceleration%.6f m/s^2 (expected $expected%.6f), line error $worstLine%.1e m, angle error $worstAngle%.1e rad")
       acceleration shouldBe expected +- 1e-3 * expected
       worstLine should be < 1e-4
       worstAngle should be < 1e-4
@@ -95,7 +96,8 @@ class SoftJointsSpec extends AnyFunSuite with Matchers:
         w.step()
         largest = math.max(largest, ((body.linearVelocity - previous) * body.mass / w.timeStep).length)
         previous = body.linearVelocity
-      info(f"heavy = $heavy: at ${(body.pos - Vector2D(2, 1)).length}%.2e m from the target, largest force ${largest / maxForce}%.3f maxForce")
+      info(
+        f"heavy = $heavy: at ${(body.pos - Vector2D(2, 1)).length}%.2e m from the target, largest force ${largest / maxForce}%.3f maxForce")
       (body.pos - Vector2D(2, 1)).length should be < 1e-3
       largest should be <= maxForce * (1 + 1e-9)
   }

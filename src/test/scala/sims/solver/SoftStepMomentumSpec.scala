@@ -34,14 +34,15 @@ class SoftStepMomentumSpec extends AnyFunSuite with Matchers with ScalaCheckProp
       val world = World()
       world.gravity = Vector2D.Null
       world.solver = SoftStep(restitutionThreshold = 0)
-      val Seq(moving, resting) = for x <- Seq(0.0, 1.0) yield
-        val ball = Circle(0.2, 1)
-        ball.pos = Vector2D(x, if x == 0 then 0.0 else offset)
-        ball.restitution = 1
-        ball.friction = 0
-        val body = ball.asBody
-        world += body
-        body
+      val Seq(moving, resting) =
+        for x <- Seq(0.0, 1.0) yield
+          val ball = Circle(0.2, 1)
+          ball.pos = Vector2D(x, if x == 0 then 0.0 else offset)
+          ball.restitution = 1
+          ball.friction = 0
+          val body = ball.asBody
+          world += body
+          body
       moving.linearVelocity = Vector2D(speed, 0)
       for _ <- 1 to 60 do world.step()
       // Elastic, frictionless, equal masses: the resting ball leaves along the line of centres

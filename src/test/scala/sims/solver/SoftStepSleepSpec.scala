@@ -42,10 +42,11 @@ class SoftStepSleepSpec extends AnyFunSuite with Matchers:
     world.solver = SoftStep()
     val walls = Seq(box(3, 0.5, Vector2D(0, -0.5)), box(0.5, 2, Vector2D(-2.5, 1.5)), box(0.5, 2, Vector2D(2.5, 1.5)))
     walls.foreach { w => w.fixed = true; world += w }
-    val balls = for row <- 0 until 10; column <- 0 until 18 yield
-      val ball = Circle(0.1, 1).asBody
-      ball.pos = Vector2D(-1.8 + 0.21 * column + 0.01 * (row % 2), 0.12 + 0.22 * row)
-      ball
+    val balls =
+      for row <- 0 until 10; column <- 0 until 18 yield
+        val ball = Circle(0.1, 1).asBody
+        ball.pos = Vector2D(-1.8 + 0.21 * column + 0.01 * (row % 2), 0.12 + 0.22 * row)
+        ball
     balls.foreach(world += _)
     settle(world, balls)
     val touching = world.contactEvents.touching
@@ -265,9 +266,10 @@ class SoftStepSleepSpec extends AnyFunSuite with Matchers:
       val ball = Circle(0.2, 1).asBody
       ball.pos = Vector2D(0.1, 2.2)
       world += ball
-      val seen = for _ <- 1 to 60 yield
-        world.step()
-        boxes.map(b => (b.pos, b.rotation, b.isAwake))
+      val seen =
+        for _ <- 1 to 60 yield
+          world.step()
+          boxes.map(b => (b.pos, b.rotation, b.isAwake))
       world -= ball
       seen.flatten
     val first = run()
@@ -310,10 +312,11 @@ class SoftStepSleepSpec extends AnyFunSuite with Matchers:
       val ground = box(10, 0.5, Vector2D(0, -0.5))
       ground.fixed = true
       world += ground
-      val boxes = for
-        row <- 0 until 4
-        column <- 0 until 4 - row
-      yield box(0.25, 0.25, Vector2D(-0.75 + row * 0.25 + column * 0.5, 0.25 + row * 0.5))
+      val boxes =
+        for
+          row <- 0 until 4
+          column <- 0 until 4 - row
+        yield box(0.25, 0.25, Vector2D(-0.75 + row * 0.25 + column * 0.5, 0.25 + row * 0.5))
       boxes.foreach(world += _)
       for _ <- 1 to 180 do world.step()
       (world, boxes)

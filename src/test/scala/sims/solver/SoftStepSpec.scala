@@ -50,7 +50,8 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     val n = 90 * 4
     val h = world.timeStep / 4
     ball.pos.x shouldBe (n * h * 1.5) +- 1e-9
-    ball.pos.y shouldBe (n * h * 2 + -9.81 * h * h * n * (n + 1) / 2) +- 1e-9
+    ball.pos.y shouldBe
+      (n * h * 2 + -9.81 * h * h * n * (n + 1) / 2) +- 1e-9
     ball.linearVelocity.y shouldBe (2 - 9.81 * h * n) +- 1e-9
     world.time shouldBe (90 * world.timeStep) +- 1e-12
   }
@@ -83,7 +84,7 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
 
   test("momentum is conserved between free bodies (no gravity): linear with contacts, angular too with joints alone") {
     forAll(Gen.choose(0.5, 3.0), Gen.choose(-2.0, 2.0), Gen.choose(-2.0, 2.0), Gen.oneOf(true, false), Gen.oneOf(true, false),
-        minSuccessful(24)) { (density, vx, w, direct, touching) =>
+      minSuccessful(24)) { (density, vx, w, direct, touching) =>
       val world = jointScene(density, vx, w, direct, touching)
       val p0 = momentum(world)
       val l0 = angularMomentum(world)
@@ -198,11 +199,12 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
       ball.pos = transform(Vector2D(1, 0.2))
       val pivot = Circle(0.05, 1)
       pivot.pos = transform(Vector2D(0, 3))
-      val links = for i <- 1 to 3 yield
-        val link = Circle(0.05, 1)
-        link.pos = transform(Vector2D(0.4 * i, 3))
-        link.collidable = false
-        link
+      val links =
+        for i <- 1 to 3 yield
+          val link = Circle(0.05, 1)
+          link.pos = transform(Vector2D(0.4 * i, 3))
+          link.collidable = false
+          link
       val bodies = (Seq(box, ball, pivot) ++ links).map(_.asBody)
       bodies.foreach(world += _)
       pivot.body.fixed = true
@@ -251,18 +253,20 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     val world = World()
     world.gravity = Vector2D.Null
     world.solver = SoftStep()
-    val links = for i <- 0 until 30 yield
-      val b = Circle(0.05, 1).asBody
-      b.pos = Vector2D(0.2 * i, 0)
-      b.linearVelocity = Vector2D(math.sin(i), math.cos(3 * i)) // a random-looking start
-      b.shapes.head.collidable = false
-      world += b
-      b
+    val links =
+      for i <- 0 until 30 yield
+        val b = Circle(0.05, 1).asBody
+        b.pos = Vector2D(0.2 * i, 0)
+        b.linearVelocity = Vector2D(math.sin(i), math.cos(3 * i)) // a random-looking start
+        b.shapes.head.collidable = false
+        world += b
+        b
     links.head.fixed = true
-    val joints = for i <- 1 until links.length yield
-      val j = DistanceJoint(links(i - 1), links(i - 1).pos, links(i), links(i).pos)
-      world += j
-      j
+    val joints =
+      for i <- 1 until links.length yield
+        val j = DistanceJoint(links(i - 1), links(i - 1).pos, links(i), links(i).pos)
+        world += j
+        j
     world.step()
     for j <- joints do
       val u = (j.connection2 - j.connection1).unit
@@ -334,16 +338,17 @@ object SoftStepSpec:
   def mixedScene(world: World = World()): World =
     world.solver = SoftStep()
     world += ground()
-    val bodies = for i <- 0 until 12 yield
-      val s: Shape = i % 3 match
-        case 0 => Circle(0.2, 1)
-        case 1 => Rectangle(0.25, 0.2, 1)
-        case _ => RegularPolygon(6, 0.25, 1)
-      s.pos = Vector2D(-1.5 + (i % 4) * 0.8, 0.5 + (i / 4) * 0.7)
-      s.rotation = 0.2 * i
-      val b = s.asBody
-      world += b
-      b
+    val bodies =
+      for i <- 0 until 12 yield
+        val s: Shape = i % 3 match
+          case 0 => Circle(0.2, 1)
+          case 1 => Rectangle(0.25, 0.2, 1)
+          case _ => RegularPolygon(6, 0.25, 1)
+        s.pos = Vector2D(-1.5 + (i % 4) * 0.8, 0.5 + (i / 4) * 0.7)
+        s.rotation = 0.2 * i
+        val b = s.asBody
+        world += b
+        b
     world += DistanceJoint(bodies(0), bodies(0).pos, bodies(4), bodies(4).pos)
     world += DistanceJoint(bodies(4), bodies(4).pos, bodies(8), bodies(8).pos)
     world += SpringJoint(bodies(1), bodies(2), 40)

@@ -59,15 +59,16 @@ object Dyn4jBuilder:
     settings.setPositionConstraintSolverIterations(Settings.Iterations)
     settings.setAtRestDetectionEnabled(false)
     settings.setContinuousDetectionMode(ContinuousDetectionMode.NONE)
-    val bodies = for spec <- layout.bodies yield
-      val body = Body()
-      val fixture = body.addFixture(shape(spec.outline), spec.density, spec.friction, spec.restitution)
-      if spec.noCollideGroup > 0 then fixture.setFilter(filter(spec.noCollideGroup))
-      body.setMass(if spec.fixed then MassType.INFINITE else MassType.NORMAL)
-      body.translate(spec.centre.x, spec.centre.y)
-      body.setLinearVelocity(spec.velocity.x, spec.velocity.y)
-      world.addBody(body)
-      body
+    val bodies =
+      for spec <- layout.bodies yield
+        val body = Body()
+        val fixture = body.addFixture(shape(spec.outline), spec.density, spec.friction, spec.restitution)
+        if spec.noCollideGroup > 0 then fixture.setFilter(filter(spec.noCollideGroup))
+        body.setMass(if spec.fixed then MassType.INFINITE else MassType.NORMAL)
+        body.translate(spec.centre.x, spec.centre.y)
+        body.setLinearVelocity(spec.velocity.x, spec.velocity.y)
+        world.addBody(body)
+        body
     for joint <- layout.joints do
       val (a, b) = (bodies(joint.body1), bodies(joint.body2))
       joint.kind match

@@ -57,33 +57,35 @@ object JBox2DBuilder:
     val world = World(Vec2(layout.gravity.x.toFloat, layout.gravity.y.toFloat))
     world.setAllowSleep(false)
     world.setContinuousPhysics(false)
-    val bodies = for spec <- layout.bodies yield
-      val definition = BodyDef()
-      definition.`type` = if spec.fixed then BodyType.STATIC else BodyType.DYNAMIC
-      definition.position.set(spec.centre.x.toFloat, spec.centre.y.toFloat)
-      definition.linearVelocity.set(spec.velocity.x.toFloat, spec.velocity.y.toFloat)
-      val body = world.createBody(definition)
-      val fixture = FixtureDef()
-      fixture.shape = shape(spec.outline)
-      fixture.density = spec.density.toFloat
-      fixture.friction = spec.friction.toFloat
-      fixture.restitution = spec.restitution.toFloat
-      // Shapes of one negative group index never collide with each other.
-      fixture.filter.groupIndex = -spec.noCollideGroup
-      body.createFixture(fixture)
-      body
-    for joint <- layout.joints do joint.kind match
-      case JointKind.Distance =>
-        val definition = DistanceJointDef()
-        definition.bodyA = bodies(joint.body1) // anchors at the body origins: the centres
-        definition.bodyB = bodies(joint.body2)
-        definition.length = layout.length(joint).toFloat
-        definition.collideConnected = false
-        world.createJoint(definition)
-      case JointKind.Revolute =>
-        val definition = RevoluteJointDef()
-        val pin = layout.pin(joint)
-        definition.initialize(bodies(joint.body1), bodies(joint.body2), Vec2(pin.x.toFloat, pin.y.toFloat))
-        definition.collideConnected = false
-        world.createJoint(definition)
+    val bodies =
+      for spec <- layout.bodies yield
+        val definition = BodyDef()
+        definition.`type` = if spec.fixed then BodyType.STATIC else BodyType.DYNAMIC
+        definition.position.set(spec.centre.x.toFloat, spec.centre.y.toFloat)
+        definition.linearVelocity.set(spec.velocity.x.toFloat, spec.velocity.y.toFloat)
+        val body = world.createBody(definition)
+        val fixture = FixtureDef()
+        fixture.shape = shape(spec.outline)
+        fixture.density = spec.density.toFloat
+        fixture.friction = spec.friction.toFloat
+        fixture.restitution = spec.restitution.toFloat
+        // Shapes of one negative group index never collide with each other.
+        fixture.filter.groupIndex = -spec.noCollideGroup
+        body.createFixture(fixture)
+        body
+    for joint <- layout.joints do
+      joint.kind match
+        case JointKind.Distance =>
+          val definition = DistanceJointDef()
+          definition.bodyA = bodies(joint.body1) // anchors at the body origins: the centres
+          definition.bodyB = bodies(joint.body2)
+          definition.length = layout.length(joint).toFloat
+          definition.collideConnected = false
+          world.createJoint(definition)
+        case JointKind.Revolute =>
+          val definition = RevoluteJointDef()
+          val pin = layout.pin(joint)
+          definition.initialize(bodies(joint.body1), bodies(joint.body2), Vec2(pin.x.toFloat, pin.y.toFloat))
+          definition.collideConnected = false
+          world.createJoint(definition)
     Built(world, layout.freeBodies.map(bodies), layout.timeStep)

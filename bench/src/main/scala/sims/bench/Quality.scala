@@ -158,9 +158,10 @@ object Quality:
     def run(engine: Engine): Outcome =
       val layout = scene.layout
       val inside = layout.bounds
-      val radii = layout.freeBodies.map(i => layout.bodies(i).outline match
-        case Outline.Circle(radius) => radius
-        case Outline.Box(_, halfHeight) => halfHeight)
+      val radii = layout.freeBodies.map(i =>
+        layout.bodies(i).outline match
+          case Outline.Circle(radius) => radius
+          case Outline.Box(_, halfHeight) => halfHeight)
       val (built, ms) = simulate(engine, scene, stepsOf(layout, 15))((_, _) => ())
       val states = built.dynamicStates
       val velocities = built.dynamicVelocities
@@ -201,8 +202,8 @@ object Quality:
     val measures: Seq[Measure] =
       Measure("rebound apexes 1 / 2 / 3 in 5 s, fractions of the drop", "each <= 1", atMost(1), fixed(3)) +:
         (if restitution == 0.5 then
-          Seq(Measure(s"first rebound / e^2 (e^2 = $expected)", "1 ± 0.12", _.forall(v => math.abs(v - 1) <= 0.12), fixed(3)))
-        else Nil)
+           Seq(Measure(s"first rebound / e^2 (e^2 = $expected)", "1 ± 0.12", _.forall(v => math.abs(v - 1) <= 0.12), fixed(3)))
+         else Nil)
     def run(engine: Engine): Outcome =
       val apexes = IndexedSeq.newBuilder[Double]
       var trough = Drop.Height // the lowest the ball has been since the last rebound's top
@@ -247,7 +248,7 @@ object Quality:
     private def finalState(built: EngineScene): Seq[Long] = bits(built.dynamicStates ++ built.dynamicVelocities)
     private def worldState(world: World): Seq[Long] =
       bits(world.bodies.toArray.flatMap(b =>
-        Array(b.pos.x, b.pos.y, b.rotation, b.linearVelocity.x, b.linearVelocity.y, b.angularVelocity)))
+          Array(b.pos.x, b.pos.y, b.rotation, b.linearVelocity.x, b.linearVelocity.y, b.angularVelocity)))
     private def flag(same: Boolean): Double = if same then 1 else 0
 
     def run(engine: Engine): Outcome =

@@ -37,9 +37,10 @@ object RunAll:
         case scene => scenes += scene
     // Cheap scenes first, so an interrupted run still has them.
     val chosen = Some(scenes.result()).filter(_.nonEmpty)
-      .getOrElse(Settings.names.sortBy(n => Settings.scene(n) match
-        case pit: sims.scenes.Ballpit => pit.balls
-        case _ => 0))
+      .getOrElse(Settings.names.sortBy(n =>
+          Settings.scene(n) match
+            case pit: sims.scenes.Ballpit => pit.balls
+            case _ => 0))
     val sanityFile = Files.createTempFile("sims-bench-sanity", ".tsv")
     val started = System.nanoTime()
     val results = chosen.flatMap { scene =>

@@ -1,7 +1,9 @@
 package sims.bench
 
-import sims.scenes.{BallStack, Ballpit, BoxPyramid, BoxStack, HeavyStack, JointGrid, LargePyramid, Layout, ManyPyramids,
-  Outline, Region, Scene, Smash, SwingingChain}
+import sims.scenes.{
+  BallStack, Ballpit, BoxPyramid, BoxStack, HeavyStack, JointGrid, LargePyramid, Layout, ManyPyramids, Outline, Region, Scene, Smash,
+  SwingingChain
+}
 
 /** Checks that a scene still looks like what it should after a run, with the same criteria
   * for every engine, so that a fast wrong answer cannot win. Containers, initial positions and
@@ -33,22 +35,24 @@ object Sanity:
   def check(scene: Scene, built: EngineScene): Result =
     val states = built.dynamicStates
     if states.exists(d => d.isNaN || d.isInfinite) then Result(false, "NaN or infinite body state")
-    else scene match
-      case pyramid: BoxPyramid => standing(states, pyramid.layout)
-      case stack: BoxStack => standing(states, stack.layout)
-      case HeavyStack => standing(states, HeavyStack.layout)
-      case chain: SwingingChain => joined(built.jointLengths, chain.layout)
-      case pyramid: LargePyramid => standing(states, pyramid.layout)
-      case pyramids: ManyPyramids => standing(states, pyramids.layout)
-      case grid: JointGrid => pinned(built.pinGaps)
-      case smash: Smash => momentumKept(built.dynamicVelocities, smash.layout)
-      case pit: Ballpit =>
-        val radii = pit.layout.freeBodies.map(i => pit.layout.bodies(i).outline match
-          case Outline.Circle(radius) => radius
-          case Outline.Box(halfWidth, halfHeight) => math.hypot(halfWidth, halfHeight))
-        contained(states, radii, pit.layout.bounds)
-      case BallStack => contained(states, IndexedSeq.fill(states.length / 3)(BallStack.Radius), BallStack.Inside)
-      case _ => Result(true, "finite")
+    else
+      scene match
+        case pyramid: BoxPyramid => standing(states, pyramid.layout)
+        case stack: BoxStack => standing(states, stack.layout)
+        case HeavyStack => standing(states, HeavyStack.layout)
+        case chain: SwingingChain => joined(built.jointLengths, chain.layout)
+        case pyramid: LargePyramid => standing(states, pyramid.layout)
+        case pyramids: ManyPyramids => standing(states, pyramids.layout)
+        case grid: JointGrid => pinned(built.pinGaps)
+        case smash: Smash => momentumKept(built.dynamicVelocities, smash.layout)
+        case pit: Ballpit =>
+          val radii = pit.layout.freeBodies.map(i =>
+            pit.layout.bodies(i).outline match
+              case Outline.Circle(radius) => radius
+              case Outline.Box(halfWidth, halfHeight) => math.hypot(halfWidth, halfHeight))
+          contained(states, radii, pit.layout.bounds)
+        case BallStack => contained(states, IndexedSeq.fill(states.length / 3)(BallStack.Radius), BallStack.Inside)
+        case _ => Result(true, "finite")
 
   /** Every ball within the walls and above the floor of `inside` (its top is not checked). */
   private def contained(states: Array[Double], radii: IndexedSeq[Double], inside: Region): Result =
@@ -101,13 +105,15 @@ object Sanity:
     val free = layout.freeBodies
     val masses = free.map { i =>
       val body = layout.bodies(i)
-      body.density * (body.outline match
-        case Outline.Circle(radius) => math.Pi * radius * radius
-        case Outline.Box(halfWidth, halfHeight) => 4 * halfWidth * halfHeight)
+      body.density *
+        (body.outline match
+          case Outline.Circle(radius) => math.Pi * radius * radius
+          case Outline.Box(halfWidth, halfHeight) => 4 * halfWidth * halfHeight)
     }
     val startX = free.indices.map(k => masses(k) * layout.bodies(free(k)).velocity.x).sum
     val startY = free.indices.map(k => masses(k) * layout.bodies(free(k)).velocity.y).sum
     val nowX = free.indices.map(k => masses(k) * velocities(3 * k)).sum
     val nowY = free.indices.map(k => masses(k) * velocities(3 * k + 1)).sum
     val error = math.hypot(nowX - startX, nowY - startY) / math.hypot(startX, startY)
-    Result(error <= MomentumTolerance, f"momentum ($nowX%.1f, $nowY%.1f) kg m/s, start ($startX%.1f, $startY%.1f): off by ${error * 100}%.2f%%")
+    Result(
+      error <= MomentumTolerance, f"momentum ($nowX%.1f, $nowY%.1f) kg m/s, start ($startX%.1f, $startY%.1f): off by ${error * 100}%.2f%%")

@@ -41,4 +41,5 @@ object Stand:
       val drift = free.indices.map(i => math.hypot(free(i).x - start(i)._1, free(i).y - start(i)._2))
       val speed = free.map(b => math.hypot(b.vx, b.vy))
       val worst = drift.indices.maxBy(drift)
-      println(f"$name%-16s ${free.size}%5d boxes  drift max ${drift.max * 100}%.2f cm (box $worst%d) mean ${drift.sum / drift.size * 100}%.3f cm  speed max ${speed.max}%.4f m/s  $ms%.2f ms/step")
+      println(
+        f"$name%-16s ${free.size}%5d boxes  drift max ${drift.max * 100}%.2f cm (box $worst%d) mean ${drift.sum / drift.size * 100}%.3f cm  speed max ${speed.max}%.4f m/s  $ms%.2f ms/step")

@@ -28,7 +28,8 @@ class ReadmePictureSpec extends AnyFunSuite:
     val rows = 30 until fresh.getHeight
     val differing = (for y <- rows; x <- 0 until fresh.getWidth if fresh.getRGB(x, y) != committed.getRGB(x, y) yield 1).size
     val share = differing.toDouble / (rows.size * fresh.getWidth)
-    assert(share < 0.01, f"${share * 100}%.2f %% of the pixels differ: regenerate with ./sbt \"examples/run BallStack --seconds 3\" and copy out/ballstack.png")
+    assert(share < 0.01,
+      f"${share * 100}%.2f %% of the pixels differ: regenerate with ./sbt \"examples/run BallStack --seconds 3\" and copy out/ballstack.png")
 
   test("the README shows the comparison of the solvers, a picture of the compare job's size"):
     val comparison = File(root, "docs/images/pyramid-compare.png")

@@ -60,21 +60,24 @@ object Main:
     def canvasXY(event: dom.MouseEvent): (Double, Double) =
       val box = canvas.getBoundingClientRect()
       ((event.clientX - box.left) * canvas.width / box.width, (event.clientY - box.top) * canvas.height / box.height)
-    canvas.addEventListener("mousedown", (event: dom.MouseEvent) => {
-      val (x, y) = canvasXY(event)
-      playground.pointerDown(x, y)
-      event.preventDefault()
-    })
-    dom.window.addEventListener("mousemove", (event: dom.MouseEvent) => {
-      val (x, y) = canvasXY(event)
-      playground.pointerMove(x, y)
-    })
+    canvas.addEventListener("mousedown",
+      (event: dom.MouseEvent) => {
+        val (x, y) = canvasXY(event)
+        playground.pointerDown(x, y)
+        event.preventDefault()
+      })
+    dom.window.addEventListener("mousemove",
+      (event: dom.MouseEvent) => {
+        val (x, y) = canvasXY(event)
+        playground.pointerMove(x, y)
+      })
     dom.window.addEventListener("mouseup", (_: dom.MouseEvent) => playground.release())
-    canvas.addEventListener("wheel", (event: dom.WheelEvent) => {
-      val (x, y) = canvasXY(event)
-      playground.zoom(event.deltaY, x, y)
-      event.preventDefault()
-    })
+    canvas.addEventListener("wheel",
+      (event: dom.WheelEvent) => {
+        val (x, y) = canvasXY(event)
+        playground.zoom(event.deltaY, x, y)
+        event.preventDefault()
+      })
 
     def animate(now: Double): Unit =
       playground.frame(now)
@@ -89,13 +92,16 @@ object Main:
           playing = playground.isPlaying,
           time = world.time,
           fingerprint = StateFingerprint(world),
-          bodies = js.Array(world.bodies.toSeq.map(b => js.Array[Any](b.pos.x, b.pos.y, b.rotation, b.fixed))*)),
+          bodies = js.Array(world.bodies.toSeq.map(b => js.Array[Any](b.pos.x, b.pos.y, b.rotation, b.fixed))*))
+      ,
       canvasPoint = (x: Double, y: Double) =>
         val (px, py) = playground.toCanvas(x, y)
-        js.Array(px, py),
+        js.Array(px, py)
+      ,
       step = (n: Int) =>
         for _ <- 1 to n do playground.step()
-        playground.draw(),
+        playground.draw()
+      ,
       load = (name: String) => { sceneChooser.value = name; playground.load(name); showAction(); showSolver() },
       fingerprint = () => StateFingerprint(playground.world),
       run = (scene: String, solver: String, steps: Int) =>

@@ -27,11 +27,12 @@ object BallStack extends Scene:
     */
   def withBalls(count: Int): (World, IndexedSeq[Body]) =
     val world = Scene.worldOf(Scene.container(halfWidth = 3, inner = Inside.maxX, height = Inside.maxY)*)
-    val balls = for i <- 0 until count yield
-      val row = i / PerRow
-      // Every other row is shifted by half a ball so the stack settles instead of standing in columns.
-      val x = -1.2 + (i % PerRow) * 0.45 + (if row % 2 == 0 then 0 else 0.12)
-      val ball = Scene.ball(Vector2D(x, 0.3 + row * 0.5), Radius)
-      world += ball
-      ball
+    val balls =
+      for i <- 0 until count yield
+        val row = i / PerRow
+        // Every other row is shifted by half a ball so the stack settles instead of standing in columns.
+        val x = -1.2 + (i % PerRow) * 0.45 + (if row % 2 == 0 then 0 else 0.12)
+        val ball = Scene.ball(Vector2D(x, 0.3 + row * 0.5), Radius)
+        world += ball
+        ball
     (world, balls)

@@ -27,9 +27,10 @@ final case class Ballpit(balls: Int) extends LayoutScene:
     val floor = SceneBody.box(Vector2D(0, -0.5), HalfInner + 2 * WallHalfThickness, 0.5, fixed = true)
     val random = java.util.Random(SeedBase + balls)
     val firstX = -0.5 * (PerRow - 1) * Pitch
-    val grid = for i <- 0 until balls yield
-      val jitter = (random.nextDouble() * 2 - 1) * MaxJitter
-      SceneBody.circle(Vector2D(firstX + (i % PerRow) * Pitch + jitter, FirstRowY + (i / PerRow) * Pitch), Radius)
+    val grid =
+      for i <- 0 until balls yield
+        val jitter = (random.nextDouble() * 2 - 1) * MaxJitter
+        SceneBody.circle(Vector2D(firstX + (i % PerRow) * Pitch + jitter, FirstRowY + (i / PerRow) * Pitch), Radius)
     Layout(IndexedSeq(floor, wall(-1), wall(1)) ++ grid, IndexedSeq.empty, Layout.StandardGravity,
       Layout.StandardTimeStep, Region(-HalfInner, 0, HalfInner, wallTop))
 

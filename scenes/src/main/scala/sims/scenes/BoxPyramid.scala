@@ -19,9 +19,10 @@ final case class BoxPyramid(rows: Int) extends LayoutScene:
 
   lazy val layout: Layout =
     val ground = SceneBody.box(Vector2D(0, -0.5), GroundHalfWidth, 0.5, fixed = true)
-    val boxes = for row <- 0 until rows; i <- 0 until rows - row yield
-      val firstX = -0.5 * (rows - row - 1) * Pitch
-      SceneBody.box(Vector2D(firstX + i * Pitch, HalfSide + 2 * HalfSide * row), HalfSide, HalfSide)
+    val boxes =
+      for row <- 0 until rows; i <- 0 until rows - row yield
+        val firstX = -0.5 * (rows - row - 1) * Pitch
+        SceneBody.box(Vector2D(firstX + i * Pitch, HalfSide + 2 * HalfSide * row), HalfSide, HalfSide)
     Layout(ground +: boxes, IndexedSeq.empty, Layout.StandardGravity, Layout.StandardTimeStep,
       Region(-GroundHalfWidth, 0, GroundHalfWidth, 2 * HalfSide * rows + 1))
 

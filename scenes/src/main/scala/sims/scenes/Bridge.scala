@@ -90,26 +90,29 @@ object Bridge extends Scene:
   def stage(withLoad: Boolean = true): (Staged, Parts) =
     val world = BridgeWorld(withLoad)
     world += Scene.ground(9)
-    val piers = for side <- Seq(-1.0, 1.0) yield
-      val pier = Scene.fixedBox(Vector2D(side * (HalfGap + 1), DeckTop / 2), 1, DeckTop / 2)
-      world += pier
-      pier
-    val planks = for i <- 0 until Planks yield
-      val plank = Rectangle(PlankHalfLength, PlankHalfThickness, PlankDensity)
-      plank.pos = (Pins(i) + Pins(i + 1)) / 2
-      plank.rotation = Slopes(i)
-      plank.restitution = 0
-      val body = plank.asBody
-      world += body
-      body
+    val piers =
+      for side <- Seq(-1.0, 1.0) yield
+        val pier = Scene.fixedBox(Vector2D(side * (HalfGap + 1), DeckTop / 2), 1, DeckTop / 2)
+        world += pier
+        pier
+    val planks =
+      for i <- 0 until Planks yield
+        val plank = Rectangle(PlankHalfLength, PlankHalfThickness, PlankDensity)
+        plank.pos = (Pins(i) + Pins(i + 1)) / 2
+        plank.rotation = Slopes(i)
+        plank.restitution = 0
+        val body = plank.asBody
+        world += body
+        body
     // The pins, left to right: pier and first plank, plank and plank, last plank and pier.
     val chain = piers.head +: planks :+ piers.last
-    val joints = for i <- 0 to Planks yield
-      val joint = RevoluteJoint(chain(i), chain(i + 1), Pins(i))
-      joint.collideConnected = false // neighbours meet end to end at the pin
-      joint.breakForce = BreakForce
-      world += joint
-      joint
+    val joints =
+      for i <- 0 to Planks yield
+        val joint = RevoluteJoint(chain(i), chain(i + 1), Pins(i))
+        joint.collideConnected = false // neighbours meet end to end at the pin
+        joint.breakForce = BreakForce
+        world += joint
+        joint
     (Staged(world), Parts(planks, joints))
 
   def build(): Staged = stage()._1

@@ -64,10 +64,10 @@ object Bullet extends Scene:
     // A room of thick walls: a ball bouncing back at 50 m/s moves 0.8 m in a step, and the
     // classic step pushes an overlap out on the near side only while it is less than half the
     // wall; the backstop behind the thin walls catches what crosses them at 100 m/s.
-    world += Scene.fixedBox(Vector2D(0, -1), 12, 1)        // floor
-    world += Scene.fixedBox(Vector2D(0, 8), 12, 1)         // ceiling
+    world += Scene.fixedBox(Vector2D(0, -1), 12, 1) // floor
+    world += Scene.fixedBox(Vector2D(0, 8), 12, 1) // ceiling
     world += Scene.fixedBox(Vector2D(-11.5, 3.5), 1.5, 4.5) // left wall, behind the cannons
-    world += Scene.fixedBox(Vector2D(12, 3.5), 2.5, 4.5)    // backstop
+    world += Scene.fixedBox(Vector2D(12, 3.5), 2.5, 4.5) // backstop
     // A shelf between the two lanes, and the two thin walls, one across each lane from floor
     // to shelf and from shelf to ceiling: nothing passes them but through them.
     world += Scene.fixedBox(Vector2D(-2.5, 3), 7, 0.05)

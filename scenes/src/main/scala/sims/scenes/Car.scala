@@ -75,19 +75,20 @@ object Car extends Scene:
     body.restitution = 0
     val chassis = body.asBody
     world += chassis
-    val wheels = for side <- Seq(-1.0, 1.0) yield
-      val circle = Circle(WheelRadius, WheelDensity)
-      circle.pos = Start + Vector2D(side * AxleOffset.x, AxleOffset.y)
-      circle.friction = 1
-      circle.restitution = 0
-      val wheel = circle.asBody
-      world += wheel
-      val axle = WheelJoint(chassis, wheel, wheel.pos, Vector2D(0, 1))
-      axle.spring = Some(Suspension)
-      axle.limits = Some(Travel)
-      axle.collideConnected = false // the wheel turns inside the chassis' outline
-      world += axle
-      (wheel, axle)
+    val wheels =
+      for side <- Seq(-1.0, 1.0) yield
+        val circle = Circle(WheelRadius, WheelDensity)
+        circle.pos = Start + Vector2D(side * AxleOffset.x, AxleOffset.y)
+        circle.friction = 1
+        circle.restitution = 0
+        val wheel = circle.asBody
+        world += wheel
+        val axle = WheelJoint(chassis, wheel, wheel.pos, Vector2D(0, 1))
+        axle.spring = Some(Suspension)
+        axle.limits = Some(Travel)
+        axle.collideConnected = false // the wheel turns inside the chassis' outline
+        world += axle
+        (wheel, axle)
     val (rear, rearAxle) = wheels.head
     val (front, frontAxle) = wheels.last
     rearAxle.motor = Some(Motor)

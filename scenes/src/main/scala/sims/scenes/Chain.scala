@@ -20,11 +20,12 @@ object Chain extends Scene:
   def build(): Staged =
     val world = sims.dynamics.World()
     val left = -(Nodes + 1) * Spacing / 2
-    val nodes = for i <- 0 to Nodes + 1 yield
-      val node = Scene.ball(Vector2D(left + i * Spacing, 0), NodeRadius, density = 10)
-      node.fixed = i == 0 || i == Nodes + 1
-      world += node
-      node
+    val nodes =
+      for i <- 0 to Nodes + 1 yield
+        val node = Scene.ball(Vector2D(left + i * Spacing, 0), NodeRadius, density = 10)
+        node.fixed = i == 0 || i == Nodes + 1
+        world += node
+        node
     for Seq(a, b) <- nodes.sliding(2) do world += DistanceJoint(a, a.pos, b, b.pos)
     world += Scene.ball(Vector2D(0.3, 3), 1.0, density = 0.2)
     Staged(world)

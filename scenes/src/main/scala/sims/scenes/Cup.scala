@@ -16,11 +16,12 @@ object Cup extends Scene:
   def build(): Staged =
     // Beads on the lower half circle, close enough that no ball slips between them.
     val beadCount = 28
-    val beads: Seq[Shape] = for i <- 0 to beadCount yield
-      val angle = math.Pi + math.Pi * i / beadCount
-      val bead = Circle(BeadRadius, 1)
-      bead.pos = Vector2D(CupRadius * PortableMath.cos(angle), CupRadius * PortableMath.sin(angle))
-      bead
+    val beads: Seq[Shape] =
+      for i <- 0 to beadCount yield
+        val angle = math.Pi + math.Pi * i / beadCount
+        val bead = Circle(BeadRadius, 1)
+        bead.pos = Vector2D(CupRadius * PortableMath.cos(angle), CupRadius * PortableMath.sin(angle))
+        bead
     val cup = Body(beads*)
     cup.fixed = true
     val world = Scene.worldOf(cup)

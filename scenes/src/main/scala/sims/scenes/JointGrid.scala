@@ -20,14 +20,18 @@ final case class JointGrid(side: Int = JointGrid.BenchmarkSide) extends LayoutSc
   def index(k: Int, i: Int): Int = k * side + i
 
   lazy val layout: Layout =
-    val discs = for k <- 0 until side; i <- 0 until side yield
-      val fixed = i == 0 && k >= side / 2 - 3 && k <= side / 2 + 3
-      SceneBody(Outline.Circle(Radius), Vector2D(k, -i), fixed, if fixed then 0 else 1, Layout.StandardFriction, 0,
-        noCollideGroup = 1)
-    val joints = for k <- 0 until side; i <- 0 until side; joint <-
-      (if i > 0 then Seq(SceneJoint(index(k, i - 1), index(k, i), JointKind.Revolute)) else Nil) ++
-        (if k > 0 then Seq(SceneJoint(index(k - 1, i), index(k, i), JointKind.Revolute)) else Nil)
-    yield joint
+    val discs =
+      for k <- 0 until side; i <- 0 until side yield
+        val fixed = i == 0 && k >= side / 2 - 3 && k <= side / 2 + 3
+        SceneBody(Outline.Circle(Radius), Vector2D(k, -i), fixed, if fixed then 0 else 1, Layout.StandardFriction, 0,
+          noCollideGroup = 1)
+    val joints =
+      for
+        k <- 0 until side; i <- 0 until side;
+        joint <-
+          (if i > 0 then Seq(SceneJoint(index(k, i - 1), index(k, i), JointKind.Revolute)) else Nil) ++
+            (if k > 0 then Seq(SceneJoint(index(k - 1, i), index(k, i), JointKind.Revolute)) else Nil)
+      yield joint
     // A grid hanging from its middle swings out to about its diagonal on either side.
     Layout(discs, joints, Layout.StandardGravity, Layout.StandardTimeStep,
       Region(-1.5 * side, -1.5 * side, 2.5 * side, 1.5 * side))

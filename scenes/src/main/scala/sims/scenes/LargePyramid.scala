@@ -16,10 +16,12 @@ final case class LargePyramid(base: Int = LargePyramid.BenchmarkBase) extends La
 
   lazy val layout: Layout =
     val ground = SceneBody.box(Vector2D(0, -1), GroundHalfWidth, 1, fixed = true)
-    val boxes = for row <- 0 until base; j <- row until base yield
-      // Box2D's benchmark: x = (i + 1) a + 2 (j - i) a - a base, y = (2 i + 1) a, a the half side.
-      SceneBody.square(Vector2D((row + 1) * HalfSide + 2 * (j - row) * HalfSide - HalfSide * base,
-        (2 * row + 1) * HalfSide), HalfSide)
+    val boxes =
+      for row <- 0 until base; j <- row until base
+      yield
+        // Box2D's benchmark: x = (i + 1) a + 2 (j - i) a - a base, y = (2 i + 1) a, a the half side.
+        SceneBody.square(Vector2D((row + 1) * HalfSide + 2 * (j - row) * HalfSide - HalfSide * base,
+            (2 * row + 1) * HalfSide), HalfSide)
     Layout(ground +: boxes, IndexedSeq.empty, Layout.StandardGravity, Layout.StandardTimeStep,
       Region(-GroundHalfWidth, 0, GroundHalfWidth, 2 * HalfSide * base + 1))
 

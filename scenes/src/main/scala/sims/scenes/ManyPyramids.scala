@@ -24,14 +24,15 @@ final case class ManyPyramids(rows: Int = ManyPyramids.BenchmarkRows, columns: I
     val floors = (0 until rows).map(i =>
       SceneBody.box(Vector2D(0, i * FloorPitch - FloorHalfThickness), groundWidth / 2, FloorHalfThickness, fixed = true))
     val baseWidth = 2 * HalfSide * Base
-    val boxes = for
-      floor <- 0 until rows
-      column <- 0 until columns
-      centreX = -0.5 * groundWidth + column * (baseWidth + 2 * HalfSide) + 2 * HalfSide
-      row <- 0 until Base
-      j <- row until Base
-    yield SceneBody.square(Vector2D((row + 1) * HalfSide + 2 * (j - row) * HalfSide + centreX - 0.5,
-      (2 * row + 1) * HalfSide + floor * FloorPitch), HalfSide)
+    val boxes =
+      for
+        floor <- 0 until rows
+        column <- 0 until columns
+        centreX = -0.5 * groundWidth + column * (baseWidth + 2 * HalfSide) + 2 * HalfSide
+        row <- 0 until Base
+        j <- row until Base
+      yield SceneBody.square(Vector2D((row + 1) * HalfSide + 2 * (j - row) * HalfSide + centreX - 0.5,
+          (2 * row + 1) * HalfSide + floor * FloorPitch), HalfSide)
     Layout(floors ++ boxes, IndexedSeq.empty, Layout.StandardGravity, Layout.StandardTimeStep,
       Region(-groundWidth / 2, 0, groundWidth / 2, rows * FloorPitch))
 

@@ -101,5 +101,6 @@ object Queries extends Scene:
       shape.pos = Vector2D(-4.5 + 0.9 * (i % 10) + 0.1 * (i / 10), 0.4 + 0.8 * (i / 10))
       shape.rotation = 0.3 * (i % 4)
       world += shape.asBody
-    Staged(world, overlay = () =>
-      Overlay(lines = beam(world).map(_._1), highlighted = highlighted(world), boxes = Seq(zone(world.time))))
+    Staged(world,
+      overlay = () =>
+        Overlay(lines = beam(world).map(_._1), highlighted = highlighted(world), boxes = Seq(zone(world.time))))

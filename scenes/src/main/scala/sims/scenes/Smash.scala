@@ -18,8 +18,8 @@ final case class Smash(columns: Int = Smash.BenchmarkColumns, rows: Int = Smash.
   lazy val layout: Layout =
     val ram = SceneBody(Outline.Box(RamHalfSide, RamHalfSide), Vector2D(-20, 0), fixed = false, RamDensity,
       Layout.StandardFriction, 0, velocity = Vector2D(RamSpeed, 0))
-    val wall = for i <- 0 until columns; j <- 0 until rows yield
-      SceneBody.square(Vector2D(i * Side + 30, (j - rows / 2.0) * Side), Side / 2)
+    val wall =
+      for i <- 0 until columns; j <- 0 until rows yield SceneBody.square(Vector2D(i * Side + 30, (j - rows / 2.0) * Side), Side / 2)
     Layout(ram +: wall, IndexedSeq.empty, Vector2D.Null, Layout.StandardTimeStep, Region(-1e4, -1e4, 1e4, 1e4))
 
 object Smash:

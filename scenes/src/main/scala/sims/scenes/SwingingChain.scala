@@ -19,8 +19,7 @@ final case class SwingingChain(links: Int) extends LayoutScene:
   def view: Region = Region(-1.1 * length, -1.1 * length, 1.1 * length, 0.2 * length)
 
   lazy val layout: Layout =
-    val circles = for i <- 0 until links yield
-      SceneBody.circle(Vector2D(i * Pitch, 0), Radius, fixed = i == 0, noCollideGroup = 1)
+    val circles = for i <- 0 until links yield SceneBody.circle(Vector2D(i * Pitch, 0), Radius, fixed = i == 0, noCollideGroup = 1)
     Layout(circles, (1 until links).map(i => SceneJoint(i - 1, i)), Layout.StandardGravity, Layout.StandardTimeStep,
       Region(-1.5 * length, -1.5 * length, 1.5 * length, 1.5 * length))
 

@@ -34,9 +34,10 @@ object TestScenes:
       def fixedBox(x: Double, y: Double, halfWidth: Double, halfHeight: Double) =
         SceneBody.box(Vector2D(x, y), halfWidth, halfHeight, fixed = true)
       val random = java.util.Random(7)
-      val balls = for i <- 0 until Balls yield
-        val centre = Vector2D(-2.2 + (i % 20) * 0.22 + (random.nextDouble() * 2 - 1) * 0.005, 0.12 + (i / 20) * 0.22)
-        SceneBody.circle(centre, 0.1)
+      val balls =
+        for i <- 0 until Balls yield
+          val centre = Vector2D(-2.2 + (i % 20) * 0.22 + (random.nextDouble() * 2 - 1) * 0.005, 0.12 + (i / 20) * 0.22)
+          SceneBody.circle(centre, 0.1)
       Layout(IndexedSeq(fixedBox(0, -0.5, 3.5, 0.5), fixedBox(-2.75, 5, 0.5, 5), fixedBox(2.75, 5, 0.5, 5)) ++ balls,
         IndexedSeq.empty, Layout.StandardGravity, Layout.StandardTimeStep, Region(-2.25, 0, 2.25, 10))
 

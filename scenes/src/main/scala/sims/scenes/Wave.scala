@@ -36,11 +36,12 @@ object Wave extends Scene:
     val frame = Scene.fixedBox(Vector2D(0, RailY), (Particles + 1) * Spacing / 2 + 0.2, 0.05)
     frame.shapes.head.collidable = false
     world += frame
-    val nodes = for i <- 0 to Particles + 1 yield
-      val node = Scene.ball(Vector2D(left + i * Spacing, 0), 0.1, density = 10)
-      node.fixed = i == 0 || i == Particles + 1
-      world += node
-      node
+    val nodes =
+      for i <- 0 to Particles + 1 yield
+        val node = Scene.ball(Vector2D(left + i * Spacing, 0), 0.1, density = 10)
+        node.fixed = i == 0 || i == Particles + 1
+        world += node
+        node
     val particles = nodes.slice(1, Particles + 1)
     for particle <- particles do
       world += PrismaticJoint(frame, Vector2D(particle.pos.x, RailY), particle, particle.pos)

@@ -6,8 +6,9 @@ import org.scalatest.matchers.should.Matchers
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
 import sims.collision.GridDetector
 import sims.dynamics.{Body, Capsule, Circle, Edge, HullPolygon, Rectangle, RegularPolygon, Shape, World}
-import sims.dynamics.joints.{DistanceJoint, JointLimits, JointMotor, JointSpring, MotorJoint, MouseJoint, PrismaticJoint,
-  RevoluteJoint, WeldJoint, WheelJoint}
+import sims.dynamics.joints.{
+  DistanceJoint, JointLimits, JointMotor, JointSpring, MotorJoint, MouseJoint, PrismaticJoint, RevoluteJoint, WeldJoint, WheelJoint
+}
 import sims.geometry.{AABB, Projection, Vector2D}
 import sims.robustness.{RandomScenes, StateHash}
 import sims.solver.{ClassicStep, SoftStep, Solver}
@@ -48,8 +49,9 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     world.detector.asInstanceOf[GridDetector].gridSide = 1.5
     world
 
-  private val solvers = Gen.oneOf[Solver](ClassicStep, SoftStep(), SoftStep(substeps = 2, contactHertz = 20,
-    jointHertz = 40, directJoints = false, contactPersistence = 0))
+  private val solvers = Gen.oneOf[Solver](ClassicStep, SoftStep(),
+    SoftStep(substeps = 2, contactHertz = 20,
+      jointHertz = 40, directJoints = false, contactPersistence = 0))
 
   test("saved at step k and loaded, a random scene steps to the same bits as the original for 60 more steps") {
     forAll(sceneSpec, solvers, Gen.choose(0, 40), minSuccessful(30)) { (spec, solver, k) =>
@@ -226,7 +228,8 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
 
   test("a world saved in format version 1 loads and steps to the same bits as the world it was saved from") {
     val stream = getClass.getResourceAsStream("/sims/io/world-format-1.bin")
-    val bytes = try stream.readAllBytes() finally stream.close()
+    val bytes = try stream.readAllBytes()
+    finally stream.close()
     bytes(7) shouldBe 1 // the version's last byte: the file is of the old format
     val loaded = WorldCodec.load(bytes)
     // The state formatOneWorld() reached when the file was saved (and until the soft step solved
@@ -253,7 +256,8 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
   /** The fixture `world-format-<version>.bin`, loaded. */
   private def fixture(version: Int): World =
     val stream = getClass.getResourceAsStream(s"/sims/io/world-format-$version.bin")
-    val bytes = try stream.readAllBytes() finally stream.close()
+    val bytes = try stream.readAllBytes()
+    finally stream.close()
     bytes(7) shouldBe version // the version's last byte: the file is of the old format
     WorldCodec.load(bytes)
 
@@ -316,7 +320,8 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
   test("a world saved in format version 3 loads: its state, its joint's impulse and contacts, the soft step's settings") {
     def fixture(): World =
       val stream = getClass.getResourceAsStream("/sims/io/world-format-3.bin")
-      val bytes = try stream.readAllBytes() finally stream.close()
+      val bytes = try stream.readAllBytes()
+      finally stream.close()
       bytes(7) shouldBe 3
       WorldCodec.load(bytes)
     val loaded = fixture()

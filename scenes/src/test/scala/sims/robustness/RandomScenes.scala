@@ -75,4 +75,3 @@ object RandomScenes:
   /** Whether every body's placement and velocities are finite. */
   def finite(world: World): Boolean = world.bodies.forall(b =>
     b.pos.isFinite && b.linearVelocity.isFinite && !b.rotation.isNaN && !b.angularVelocity.isNaN)
-

@@ -44,12 +44,13 @@ class StabilitySpec extends AnyFunSuite with Matchers:
       // floor. This test holds the laws; the toppling is reported, not hidden.
       val world = Scene.worldOf(Scene.container(halfWidth = 5, inner = 4, height = 6)*)
       world.solver = solver
-      val boxes = for i <- 0 until 10 yield
-        val r = Rectangle(0.3, 0.2, 1)
-        r.pos = Vector2D(0, 0.21 + i * 0.41) // 1 cm apart: see NarrowphaseSpec on exactly touching boxes
-        val b = r.asBody
-        world += b
-        b
+      val boxes =
+        for i <- 0 until 10 yield
+          val r = Rectangle(0.3, 0.2, 1)
+          r.pos = Vector2D(0, 0.21 + i * 0.41) // 1 cm apart: see NarrowphaseSpec on exactly touching boxes
+          val b = r.asBody
+          world += b
+          b
       val (start, end) = runAndCheck(world, boxes, b => math.abs(b.pos.x) < 4 && b.pos.y > 0 && b.pos.y < 6)
       info(f"energy at start $start%.2f J, kinetic energy after 100 s $end%.5f J; " +
         f"top box at ${boxes.last.pos.x}%.3f, ${boxes.last.pos.y}%.3f")

@@ -29,9 +29,10 @@ class BenchScenesSpec extends AnyFunSuite with Matchers:
     layout.bodies.size shouldBe 503
     layout.bodies.take(3).map(_.fixed) shouldBe Seq(true, true, true)
     layout.freeBodies shouldBe (3 until 503)
-    val walls = layout.bodies.slice(1, 3).map(b => b.outline match
-      case Outline.Box(halfWidth, halfHeight) => (b.centre.x, halfWidth, b.centre.y - halfHeight, b.centre.y + halfHeight)
-      case other => fail(s"a wall is $other"))
+    val walls = layout.bodies.slice(1, 3).map(b =>
+      b.outline match
+        case Outline.Box(halfWidth, halfHeight) => (b.centre.x, halfWidth, b.centre.y - halfHeight, b.centre.y + halfHeight)
+        case other => fail(s"a wall is $other"))
     walls.map(w => math.abs(w._1) - w._2) shouldBe Seq(5.0, 5.0) // inner faces at x = -5 and 5
     walls.map(_._3).foreach(_ shouldBe -1.0 +- 1e-12)
     walls.map(_._4).foreach(_ shouldBe pit.wallTop +- 1e-12)
@@ -145,9 +146,10 @@ class BenchScenesSpec extends AnyFunSuite with Matchers:
     val layout = scene.layout
     layout.bodies.count(_.fixed) shouldBe 20
     layout.freeBodies.size shouldBe 22000
-    val floorTops = layout.bodies.filter(_.fixed).map(b => b.outline match
-      case Outline.Box(_, halfHeight) => b.centre.y + halfHeight
-      case other => fail(s"a floor is $other"))
+    val floorTops = layout.bodies.filter(_.fixed).map(b =>
+      b.outline match
+        case Outline.Box(_, halfHeight) => b.centre.y + halfHeight
+        case other => fail(s"a floor is $other"))
     floorTops.zipWithIndex.foreach((top, i) => top shouldBe (11.0 * i) +- 1e-12)
     scene.groundWidth shouldBe 220.0
     // The first pyramid's bottom row: x from -110 + 1 - 0.5 + 0.5, one box apart, resting on floor 0.
@@ -181,4 +183,3 @@ class BenchScenesSpec extends AnyFunSuite with Matchers:
     layout.bodies.tail.map(_.centre.x).max shouldBe (30 + 119 * 0.4) +- 1e-9
     layout.freeBodies.size shouldBe 9601
   }
-

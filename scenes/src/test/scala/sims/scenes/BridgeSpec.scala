@@ -39,7 +39,8 @@ class BridgeSpec extends AnyFunSuite with Matchers:
       breaks = world.jointBreaks
       if step < DropStep then world.load shouldBe None
     val broken = breaks.map(b => bridge.joints.indexOf(b.joint))
-    info(f"joints ${broken.mkString(", ")} (0 at the left pier) broke at step $step, pulling with ${breaks.map(_.force.length).min}%.0f N or more")
+    info(
+      f"joints ${broken.mkString(", ")} (0 at the left pier) broke at step $step, pulling with ${breaks.map(_.force.length).min}%.0f N or more")
     step should be > DropStep // the bridge held its own weight until the load came
     breaks should not be empty
     for b <- breaks do

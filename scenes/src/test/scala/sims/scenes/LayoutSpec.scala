@@ -77,4 +77,3 @@ class LayoutSpec extends AnyFunSuite with Matchers:
     world.bodies(1).linearVelocity shouldBe Vector2D.Null
     an[IllegalArgumentException] should be thrownBy layout.bodies(0).copy(velocity = Vector2D(1, 0))
   }
-

@@ -17,9 +17,10 @@ class ScenesSpec extends AnyFunSuite:
     * to remove the entry). NaN is still checked strictly for them. The soft step has none.
     */
   private val KnownEscapes: Map[String, String] = Map(
-    Pile.name -> ("under the pile's weight a few small shapes (2 to 6 of 2,100, triangles first) sink deeper " +
-      "than their own size into the ground; the separating axis is then a side of the shape, position correction " +
-      "pushes it sideways and down, and it falls through the 4 m thick ground"))
+    Pile.name ->
+      ("under the pile's weight a few small shapes (2 to 6 of 2,100, triangles first) sink deeper " +
+        "than their own size into the ground; the separating axis is then a side of the shape, position correction " +
+        "pushes it sideways and down, and it falls through the 4 m thick ground"))
 
   /** The first body not finite, with a description, if any. */
   private def notFinite(world: World): Option[String] =

@@ -27,7 +27,8 @@ class SoftQualitySpec extends AnyFunSuite with Matchers:
     for _ <- 1 to 300 do world.step()
     val mean = boxes.map(_.pos.y).sum / boxes.size
     val fastest = boxes.map(_.linearVelocity.length).max
-    info(f"mean height ${100 * mean / startMean}%.2f%%, top box ${100 * (startTop - boxes.last.pos.y)}%.2f cm lower, fastest $fastest%.4f m/s")
+    info(
+      f"mean height ${100 * mean / startMean}%.2f%%, top box ${100 * (startTop - boxes.last.pos.y)}%.2f cm lower, fastest $fastest%.4f m/s")
     mean / startMean should be >= 0.98
     startTop - boxes.last.pos.y should be < 0.05
     fastest should be < 0.1
@@ -39,11 +40,12 @@ class SoftQualitySpec extends AnyFunSuite with Matchers:
     ground.pos = Vector2D(0, -0.5)
     world += ground.asBody
     ground.body.fixed = true
-    val boxes = for i <- 0 until 12 yield
-      val r = Rectangle(0.25, 0.25, 1)
-      r.pos = Vector2D(0.002 * ((i * 7) % 5 - 2), 0.25 + 0.5 * i)
-      world += r.asBody
-      r.body
+    val boxes =
+      for i <- 0 until 12 yield
+        val r = Rectangle(0.25, 0.25, 1)
+        r.pos = Vector2D(0.002 * ((i * 7) % 5 - 2), 0.25 + 0.5 * i)
+        world += r.asBody
+        r.body
     val topX = boxes.last.pos.x
     var sideways = 0.0
     var tilt = 0.0
@@ -131,7 +133,8 @@ class SoftQualitySpec extends AnyFunSuite with Matchers:
       for case j: RevoluteJoint <- ragdoll.joints do pinError = math.max(pinError, j.separation)
     val netStretch = net.joints.collect { case j: DistanceJoint => (j.connection2 - j.connection1).length / j.distance - 1 }.max
     val pylonTop = pylon.node(6, 0).pos.y
-    info(f"ragdoll pins open at most ${1000 * pinError}%.2f mm; net links stretched at most ${100 * netStretch}%.2f%%; pylon top at $pylonTop%.3f m")
+    info(
+      f"ragdoll pins open at most ${1000 * pinError}%.2f mm; net links stretched at most ${100 * netStretch}%.2f%%; pylon top at $pylonTop%.3f m")
     pinError should be < 0.01
     netStretch should be < 0.05
     pylonTop should be > 6 * 1.0 - 0.1

@@ -262,9 +262,9 @@ private[sims] final class UniformGrid extends Broadphase:
       // and between two such crossings.
       // (Fine cells count from the grid's origin.)
       var nextX = if dx > 0 then (originX + (cx + 1L) * cellSide - fromX) / dx
-        else if dx < 0 then (originX + cx * cellSide - fromX) / dx else Double.PositiveInfinity
+      else if dx < 0 then (originX + cx * cellSide - fromX) / dx else Double.PositiveInfinity
       var nextY = if dy > 0 then (originY + (cy + 1L) * cellSide - fromY) / dy
-        else if dy < 0 then (originY + cy * cellSide - fromY) / dy else Double.PositiveInfinity
+      else if dy < 0 then (originY + cy * cellSide - fromY) / dy else Double.PositiveInfinity
       val deltaX = if dx != 0 then cellSide / math.abs(dx) else Double.PositiveInfinity
       val deltaY = if dy != 0 then cellSide / math.abs(dy) else Double.PositiveInfinity
       // Exactly the cells between the two ends: rounding of the crossings cannot run away.
@@ -308,7 +308,7 @@ private[sims] final class UniformGrid extends Broadphase:
   /** Adds shape i to the query's result once, if its bounds overlap the box. */
   private def consider(i: Int, minX: Double, minY: Double, maxX: Double, maxY: Double): Unit =
     if foundStamp(i) != queryStamp &&
-        sims.geometry.AABB.overlaps(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), minX, minY, maxX, maxY) then
+      sims.geometry.AABB.overlaps(boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i), minX, minY, maxX, maxY) then
       foundStamp(i) = queryStamp
       foundIndices += i
 
@@ -392,8 +392,7 @@ private[sims] object UniformGrid:
     * clamped to the Int range a Long product overflows (2^32 squared) and a huge shape would
     * count as small.
     */
-  private inline def cellCount(x0: Int, x1: Int, y0: Int, y1: Int): Double =
-    (x1.toDouble - x0 + 1) * (y1.toDouble - y0 + 1)
+  private inline def cellCount(x0: Int, x1: Int, y0: Int, y1: Int): Double = (x1.toDouble - x0 + 1) * (y1.toDouble - y0 + 1)
 
   /** The shape index in a group key. */
   private inline def groupShape(key: Long): Int = Int.MaxValue - (key & 0xffffffffL).toInt
@@ -415,12 +414,14 @@ private[sims] object UniformGrid:
     * and runs along it, +infinity if it runs along it outside).
     */
   private inline def slabEntry(min: Double, max: Double, p: Double, d: Double): Double =
-    if d > 0 then (min - p) / d else if d < 0 then (max - p) / d
+    if d > 0 then (min - p) / d
+    else if d < 0 then (max - p) / d
     else if p >= min && p <= max then Double.NegativeInfinity else Double.PositiveInfinity
 
   /** Where the line leaves the slab (see `slabEntry`). */
   private inline def slabExit(min: Double, max: Double, p: Double, d: Double): Double =
-    if d > 0 then (max - p) / d else if d < 0 then (min - p) / d
+    if d > 0 then (max - p) / d
+    else if d < 0 then (min - p) / d
     else if p >= min && p <= max then Double.PositiveInfinity else Double.NegativeInfinity
 
   /** Grid cell index of a coordinate: floor(coordinate / side) (clamped to the Long range). */

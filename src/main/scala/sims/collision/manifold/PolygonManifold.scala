@@ -166,10 +166,14 @@ private[sims] object PolygonManifold:
     val p2Id = idBase | incidentNext
 
     val corner = apart && (
-      cornerPoint(r1x, r1y, r2x, r2y, p1x, p1y, p2x, p2y, p1Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
-        cornerPoint(r1x, r1y, r2x, r2y, p2x, p2y, p1x, p1y, p2Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
-        cornerPoint(r2x, r2y, r1x, r1y, p1x, p1y, p2x, p2y, p1Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
-        cornerPoint(r2x, r2y, r1x, r1y, p2x, p2y, p1x, p1y, p2Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold))
+      cornerPoint(
+        r1x, r1y, r2x, r2y, p1x, p1y, p2x, p2y, p1Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
+        cornerPoint(
+          r1x, r1y, r2x, r2y, p2x, p2y, p1x, p1y, p2Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
+        cornerPoint(
+          r2x, r2y, r1x, r1y, p1x, p1y, p2x, p2y, p1Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold) ||
+        cornerPoint(
+          r2x, r2y, r1x, r1y, p2x, p2y, p1x, p1y, p2Id, orientation, referenceRadius, incidentRadius, speculativeDistance, manifold))
 
     if !corner then
       val length = math.sqrt((r2x - r1x) * (r2x - r1x) + (r2y - r1y) * (r2y - r1y))
@@ -224,7 +228,14 @@ private[sims] object PolygonManifold:
       manifold: Manifold): Boolean =
     val dx = px - rx
     val dy = py - ry
-    val closest = dx * (rOtherX - rx) + dy * (rOtherY - ry) < 0 && dx * (pOtherX - px) + dy * (pOtherY - py) > 0
+    val closest = dx *
+      (rOtherX - rx) +
+      dy *
+      (rOtherY - ry) < 0 &&
+      dx *
+      (pOtherX - px) +
+      dy *
+      (pOtherY - py) > 0
     if closest then
       val distance = math.sqrt(dx * dx + dy * dy) // > 0: the polygons are apart
       val separation = distance - referenceRadius - incidentRadius

@@ -67,7 +67,7 @@ private[sims] final class Narrowphase:
       val placements1 = a.body.placements
       val placements2 = b.body.placements
       if (slot.doneFirst eq a) && (slot.doneSecond eq b) && slot.donePlacements1 == placements1 &&
-          slot.donePlacements2 == placements2 then
+        slot.donePlacements2 == placements2 then
         slot.result
       else
         val c = functions.collide(slot, a, b, pool)

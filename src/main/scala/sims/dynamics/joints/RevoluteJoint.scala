@@ -133,8 +133,8 @@ final class RevoluteJoint(val node1: Body, val node2: Body, anchor: Vector2D) ex
       val relative = node2.w - node1.w
       val a = angle
       val stop = if a <= range.lower && relative < 0 then -relative
-        else if a >= range.upper && relative > 0 then -relative
-        else 0.0
+      else if a >= range.upper && relative > 0 then -relative
+      else 0.0
       if stop != 0 then
         node1.w -= stop / inverse * node1.invI
         node2.w += stop / inverse * node2.invI

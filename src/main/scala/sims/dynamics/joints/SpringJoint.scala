@@ -76,7 +76,10 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
     a1.update()
     a2.update()
     val inverseMass = node1.invMass + node2.invMass +
-      node1.invI * (a1.armX * a1.armX + a1.armY * a1.armY) + node2.invI * (a2.armX * a2.armX + a2.armY * a2.armY)
+      node1.invI *
+      (a1.armX * a1.armX + a1.armY * a1.armY) +
+      node2.invI *
+      (a2.armX * a2.armX + a2.armY * a2.armY)
     (springConstant * h * h + 2 * _damping * h) * inverseMass
 
   /** A spring too stiff for the solver's force interval grows without bound, to 1e150 m and

@@ -279,8 +279,10 @@ private[sims] object ContactConstraints:
             if hot(q + RelativeVelocity) < -threshold && hot(q + MaxNormalImpulse) > 0 then
               val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
               val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-              val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) + state(sA + AngularVelocity) * rAy
-              val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
+              val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) +
+                state(sA + AngularVelocity) * rAy
+              val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) -
+                state(sA + AngularVelocity) * rAx
               val vn = dvx * nx + dvy * ny
               val accumulated = hot(q + NormalImpulse)
               // The substeps move positions by the velocity at each substep's end: under a

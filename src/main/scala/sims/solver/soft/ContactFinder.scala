@@ -140,7 +140,7 @@ private[sims] final class ContactFinder:
       val collision = narrowphase.collideGeneral(methods, a, b)
       if collision != null then addCollision(table, collision, key, last)
     else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
-        keeps(table.committed, last, a, b, persistence) then
+      keeps(table.committed, last, a, b, persistence) then
       keep(table, last, a, b, key)
     else
       functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
@@ -489,4 +489,3 @@ private object ContactFinder:
   inline def cosine(a: Double): Double =
     val a2 = a * a
     1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30))
-

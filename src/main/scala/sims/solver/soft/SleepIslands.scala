@@ -32,7 +32,7 @@ private[sims] final class SleepIslands:
         val speed2 = b.vx * b.vx + b.vy * b.vy
         val turn = b.extent * b.w
         if !sleepOn || !b.enableSleep || speed2 > threshold * threshold || turn * turn > threshold * threshold ||
-            threshold == 0 then b.sleepTime = 0
+          threshold == 0 then b.sleepTime = 0
         else
           b.sleepTime += dt
           if b.sleepTime >= Defaults.TimeToSleep then ready = true

@@ -97,7 +97,7 @@ private[sims] final class SoftBodies:
   def firstNonFiniteVelocity(): Int =
     var i = 0
     while i < count && finite(state(i * Stride + VelocityX)) && finite(state(i * Stride + VelocityY)) &&
-        finite(state(i * Stride + AngularVelocity)) do i += 1
+      finite(state(i * Stride + AngularVelocity)) do i += 1
     if i < count then i else -1
 
   /** Whether body i moves under impulses (not fixed, kinematic or asleep): only such bodies are

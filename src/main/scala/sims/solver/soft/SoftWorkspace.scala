@@ -58,8 +58,10 @@ private[sims] final class SoftWorkspace extends sims.dynamics.CarriedState:
         val q = contacts.hotPoint(c, p)
         val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
         val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-        val dx = state(sB + ShiftX) - state(sA + ShiftX) + (state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy) - (state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy)
-        val dy = state(sB + ShiftY) - state(sA + ShiftY) + (state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy) - (state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy)
+        val dx = state(sB + ShiftX) - state(sA + ShiftX) + (state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy) -
+          (state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy)
+        val dy = state(sB + ShiftY) - state(sA + ShiftY) + (state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy) -
+          (state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy)
         dx * nx + dy * ny + hot(q + BaseSeparation)
       }
       def column(offset: Int) = IndexedSeq.tabulate(count)(p => hot(contacts.hotPoint(c, p) + offset))

@@ -81,18 +81,20 @@ class UniformGridLimitsSpec extends AnyFunSuite with Matchers with ScalaCheckPro
   }
 
   test("far from the origin grid pairs equal brute-force pairs") {
-    val shape = for
-      x <- Gen.choose(-5.0, 5.0); y <- Gen.choose(-5.0, 5.0); size <- Gen.choose(0.05, 1.0)
-    yield (x, y, size)
+    val shape =
+      for
+        x <- Gen.choose(-5.0, 5.0); y <- Gen.choose(-5.0, 5.0); size <- Gen.choose(0.05, 1.0)
+      yield (x, y, size)
     forAll(Gen.listOfN(50, shape), Gen.oneOf(0.0, 2e9, -7e11, 3e14)) { (specs, offset) =>
       val shapes = specs.toArray.map((x, y, size) => ball(size, offset + x, offset + y): Shape)
       val (found, _) = gridPairs(shapes)
-      val expected = for
-        i <- shapes.indices; j <- i + 1 until shapes.length
-        a = shapes(i); b = shapes(j)
-        if sims.geometry.AABB.overlaps(a.minX - 0.06, a.minY - 0.06, a.maxX + 0.06, a.maxY + 0.06,
-          b.minX - 0.06, b.minY - 0.06, b.maxX + 0.06, b.maxY + 0.06) && PairFilter.accepts(a, b)
-      yield (i, j)
+      val expected =
+        for
+          i <- shapes.indices; j <- i + 1 until shapes.length
+          a = shapes(i); b = shapes(j)
+          if sims.geometry.AABB.overlaps(a.minX - 0.06, a.minY - 0.06, a.maxX + 0.06, a.maxY + 0.06,
+            b.minX - 0.06, b.minY - 0.06, b.maxX + 0.06, b.maxY + 0.06) && PairFilter.accepts(a, b)
+        yield (i, j)
       found.sorted shouldBe expected
     }
   }

@@ -65,8 +65,11 @@ object ManifoldFixtures:
     def within(p: Vector2D, q: Vector2D, r: Vector2D) = // r on the line p-q: between them?
       math.min(p.x, q.x) <= r.x && r.x <= math.max(p.x, q.x) && math.min(p.y, q.y) <= r.y && r.y <= math.max(p.y, q.y)
     val (s1, s2, s3, s4) = (side(a, b, c), side(a, b, d), side(c, d, a), side(c, d, b))
-    (s1 * s2 < 0 && s3 * s4 < 0) || (s1 == 0 && within(a, b, c)) || (s2 == 0 && within(a, b, d)) ||
-      (s3 == 0 && within(c, d, a)) || (s4 == 0 && within(c, d, b))
+    (s1 * s2 < 0 && s3 * s4 < 0) ||
+    (s1 == 0 && within(a, b, c)) ||
+    (s2 == 0 && within(a, b, d)) ||
+    (s3 == 0 && within(c, d, a)) ||
+    (s4 == 0 && within(c, d, b))
 
   /** Distance between the segments a-b and c-d: 0 if they meet, else the least end-to-segment distance. */
   def segmentsDistance(a: Vector2D, b: Vector2D, c: Vector2D, d: Vector2D): Double =
@@ -95,11 +98,10 @@ object ManifoldFixtures:
     }.min
 
   /** True when some side normal of either polygon separates them (with a gap of more than 0). */
-  private def separatedPolygons(a: ConvexPolygon, b: ConvexPolygon): Boolean =
-    (a.sides ++ b.sides).exists { side =>
-      val pa = a.project(side.n0); val pb = b.project(side.n0)
-      pa.upper < pb.lower || pb.upper < pa.lower
-    }
+  private def separatedPolygons(a: ConvexPolygon, b: ConvexPolygon): Boolean = (a.sides ++ b.sides).exists { side =>
+    val pa = a.project(side.n0); val pb = b.project(side.n0)
+    pa.upper < pb.lower || pb.upper < pa.lower
+  }
 
   /** The distance between the shapes; 0 when they touch or overlap. */
   def distance(a: Shape, b: Shape): Double = (a, b) match

@@ -32,7 +32,7 @@ class CollisionReuseSpec extends AnyFunSuite with Matchers:
     val cache = readyCache()
     val floor = Rectangle(5, 0.5, 1); floor.pos = Vector2D(0, 0); floor.asBody.fixed = true
     val a = ball(-2, 0.9) // 0.1 m into the floor
-    val b = ball(2, 3)    // well above it
+    val b = ball(2, 3) // well above it
     val slotA = slotFor(cache, floor, a)
     val slotB = slotFor(cache, floor, b)
 

@@ -49,7 +49,8 @@ class PrismaticJointSpec extends AnyFunSuite with Matchers with ScalaCheckProper
       // for a constant acceleration: (v(2 s) - v(1 s)) / 1 s.
       val acceleration = -(speeds(119) - speeds(59)) / (60 * w.timeStep)
       val expected = g * math.sin(slope)
-      info(f"density $density%.1f: acceleration $acceleration%.6f m/s^2, expected $expected%.6f (${(acceleration / expected - 1) * 100}%.2e %%), line error $worstLine%.1e m, angle error $worstAngle%.1e rad")
+      info(
+        f"density $density%.1f: acceleration $acceleration%.6f m/s^2, expected $expected%.6f (${(acceleration / expected - 1) * 100}%.2e %%), line error $worstLine%.1e m, angle error $worstAngle%.1e rad")
       acceleration shouldBe expected +- 0.01 * expected
       worstLine should be < 1e-9
       worstAngle should be < 1e-9

@@ -34,7 +34,10 @@ class RevoluteJointSpec extends AnyFunSuite with Matchers with ScalaCheckPropert
   private def energy(bodies: Seq[Body], g: Double, floor: Double): Double =
     bodies.map { b =>
       val v = b.linearVelocity
-      0.5 * b.mass * (v dot v) + 0.5 * b.I * b.angularVelocity * b.angularVelocity + b.mass * g * (b.pos.y - floor)
+      0.5 * b.mass *
+        (v dot v) + 0.5 * b.I * b.angularVelocity * b.angularVelocity +
+        b.mass * g *
+        (b.pos.y - floor)
     }.sum
 
   test("a physical pendulum keeps its pin within 1e-3 m for 20 s and swings with period 2 pi sqrt(I_pivot / (m g d)) to 1%") {
@@ -66,7 +69,8 @@ class RevoluteJointSpec extends AnyFunSuite with Matchers with ScalaCheckPropert
           crossings += w.time - w.timeStep * x / (x - previousX)
         previousX = x
       val period = (crossings.last - crossings.head) / (crossings.length - 1)
-      info(f"length $length%.2f, d $d%.3f: pin error $worstPin%.2e m, period $period%.5f s, expected $expected%.5f s, error ${(period / expected - 1) * 100}%.3f %%")
+      info(f"length $length%.2f, d $d%.3f: pin error $worstPin%.2e m, period $period%.5f s, expected $expected%.5f s, error ${(period /
+          expected - 1) * 100}%.3f %%")
       worstPin should be < 1e-3
       crossings.length should be >= 3
       period shouldBe expected +- 0.01 * expected
@@ -95,7 +99,8 @@ class RevoluteJointSpec extends AnyFunSuite with Matchers with ScalaCheckPropert
           highest = math.max(highest, energy(Seq(upper, lower), g, floor))
           worstPin = math.max(worstPin, joints.map(_.separation).max)
         val end = energy(Seq(upper, lower), g, floor)
-        info(f"angles ($angle1%.2f, $angle2%.2f): energy at most ${(highest / start - 1) * 100}%.3f %% above the start, ${(end / start - 1) * 100}%.2f %% at the end; pin error $worstPin%.1e m")
+        info(f"angles ($angle1%.2f, $angle2%.2f): energy at most ${(highest / start - 1) *
+            100}%.3f %% above the start, ${(end / start - 1) * 100}%.2f %% at the end; pin error $worstPin%.1e m")
         Seq(upper, lower).foreach(b => b.pos.isFinite shouldBe true)
         highest should be <= 1.01 * start
         worstPin should be < 1e-3

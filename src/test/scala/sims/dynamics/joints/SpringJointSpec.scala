@@ -15,7 +15,7 @@ class SpringJointSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyC
 
   test("two free bodies on a damped spring keep their total momentum (no gravity)") {
     forAll(Generators.vector(3), Generators.vector(3), Gen.choose(0.0, 5.0), Gen.choose(1.0, 100.0),
-        minSuccessful(20)) { (v1, v2, damping, k) =>
+      minSuccessful(20)) { (v1, v2, damping, k) =>
       val world = World()
       world.gravity = Vector2D.Null
       world.enableCollisionDetection = false

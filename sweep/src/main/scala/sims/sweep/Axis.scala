@@ -21,8 +21,9 @@ object Axis:
     require(!last.isNaN && !last.isInfinite, s"axis '$name' needs a finite last value, got $last")
     // Each value from its index (not by adding a step), so that no rounding accumulates; the
     // last is `last` itself.
-    Axis(name, IndexedSeq.tabulate(count)(i =>
-      if i == 0 then first else if i == count - 1 then last else first + (last - first) * i / (count - 1)))
+    Axis(name,
+      IndexedSeq.tabulate(count)(i =>
+        if i == 0 then first else if i == count - 1 then last else first + (last - first) * i / (count - 1)))
 
   /** The values `first`, `first + step`, ... up to `last` (included if it is on a step). */
   def stepped(name: String, first: Double, last: Double, step: Double): Axis =

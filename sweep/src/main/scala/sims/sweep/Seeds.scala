@@ -19,5 +19,4 @@ object Seeds:
   def ofRun(seed: Long, index: Int): Long = mix(seed + Golden * (index.toLong + 1))
 
   /** The `k`-th uniform number in [0, 1) of the stream seeded with `seed` (53 random bits). */
-  def uniform(seed: Long, k: Int): Double =
-    (mix(seed ^ mix(Golden * (k.toLong + 1))) >>> 11) * Seeds.Unit
+  def uniform(seed: Long, k: Int): Double = (mix(seed ^ mix(Golden * (k.toLong + 1))) >>> 11) * Seeds.Unit

@@ -28,15 +28,15 @@ class ParquetWriterSpec extends AnyFunSuite:
     val runValues = file.indexOfSlice(ByteBuffer.allocate(24).order(ByteOrder.LITTLE_ENDIAN).putLong(0).putLong(1).putLong(-3).array)
     assert(runValues > 4)
     val xValues = file.indexOfSlice(ByteBuffer.allocate(24).order(ByteOrder.LITTLE_ENDIAN)
-      .putDouble(0.5).putDouble(-2.25).putDouble(Double.NaN).array)
+        .putDouble(0.5).putDouble(-2.25).putDouble(Double.NaN).array)
     assert(xValues > runValues + 24)
 
   test("Thrift's compact protocol: deltas, zigzag varints, long field steps, lists and strings"):
     val writer = ThriftCompact()
     writer.structValue {
-      writer.int32(1, -1)          // delta 1, type 5; zigzag(-1) = 1
-      writer.int64(3, 300)         // delta 2, type 6; zigzag(300) = 600 = 0xd8 0x04
-      writer.string(20, "ab")      // delta 17 > 15: type 8 then the id as a zigzag varint (40)
+      writer.int32(1, -1) // delta 1, type 5; zigzag(-1) = 1
+      writer.int64(3, 300) // delta 2, type 6; zigzag(300) = 600 = 0xd8 0x04
+      writer.string(20, "ab") // delta 17 > 15: type 8 then the id as a zigzag varint (40)
       writer.int32List(21, Seq(1, 2))
     }
     assert(writer.bytes.map(_ & 0xff).toSeq ==

@@ -52,7 +52,8 @@ object Main:
               out(3 * i + 1) = bodies(i).pos.y
               out(3 * i + 2) = bodies(i).rotation
               i += 1
-            out,
+            out
+          ,
           jointLengths = () => js.Array(joints.map(j => (j.connection2 - j.connection1).length)*)
         )
     )

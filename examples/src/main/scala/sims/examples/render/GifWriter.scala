@@ -150,11 +150,10 @@ final class GifWriter(file: File, frameDelayMillis: Int, palette: Seq[Color] = N
     metadata
 
   /** The child of `parent` with this name, created if missing. */
-  private def child(parent: IIOMetadataNode, name: String): IIOMetadataNode =
-    (0 until parent.getLength).map(parent.item).collectFirst {
-      case node: IIOMetadataNode if node.getNodeName == name => node
-    }.getOrElse {
-      val node = IIOMetadataNode(name)
-      parent.appendChild(node)
-      node
-    }
+  private def child(parent: IIOMetadataNode, name: String): IIOMetadataNode = (0 until parent.getLength).map(parent.item).collectFirst {
+    case node: IIOMetadataNode if node.getNodeName == name => node
+  }.getOrElse {
+    val node = IIOMetadataNode(name)
+    parent.appendChild(node)
+    node
+  }

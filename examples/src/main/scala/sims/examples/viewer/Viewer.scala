@@ -2,7 +2,9 @@ package sims.examples.viewer
 
 import java.awt.{BorderLayout, Font}
 import java.awt.event.ActionEvent
-import javax.swing.{BorderFactory, BoxLayout, JButton, JCheckBox, JComboBox, JFrame, JPanel, JTextArea, SwingUtilities, Timer, WindowConstants}
+import javax.swing.{
+  BorderFactory, BoxLayout, JButton, JCheckBox, JComboBox, JFrame, JPanel, JTextArea, SwingUtilities, Timer, WindowConstants
+}
 import sims.examples.SolverChoice
 import sims.scenes.{Scene, Scenes}
 

@@ -65,8 +65,10 @@ class HeadlessRunSpec extends AnyFunSuite:
     val classic = ImageIO.read(HeadlessRun.run(Stacking, 0.4, directory, quiet, interactive = false).png)
     val soft = ImageIO.read(HeadlessRun.run(Stacking, 0.4, directory, quiet, interactive = false, solver = SolverChoice.Soft).png)
     def differing(half: BufferedImage, offset: Int): Int =
-      (for y <- 30 until HeadlessRun.Height; x <- 2 until HeadlessRun.Width - 2
-        if half.getRGB(x, y) != picture.getRGB(offset + x, y) yield 1).size
+      (for
+        y <- 30 until HeadlessRun.Height; x <- 2 until HeadlessRun.Width - 2
+        if half.getRGB(x, y) != picture.getRGB(offset + x, y)
+      yield 1).size
     assert(differing(classic, 0) == 0)
     assert(differing(soft, HeadlessRun.Width) == 0)
     assert(differing(classic, HeadlessRun.Width) > 0, "the two solvers stack the boxes differently")

@@ -73,7 +73,8 @@ class ViewerSpec extends AnyFunSuite:
     assert(panel.staged.world.solver == ClassicStep)
     assert(ViewerControls(BallStack, SolverChoice.Soft).simulation.staged.world.solver.isInstanceOf[SoftStep])
 
-  test("a soft-step-only scene runs under the soft step: the solver chooser shows it, disabled, and the choice returns with the next scene"):
+  test(
+    "a soft-step-only scene runs under the soft step: the solver chooser shows it, disabled, and the choice returns with the next scene"):
     val controls = ViewerControls(sims.scenes.Stacking)
     val panel = controls.simulation
     assert(controls.solverChoosable && controls.solverShown == SolverChoice.Classic.label)

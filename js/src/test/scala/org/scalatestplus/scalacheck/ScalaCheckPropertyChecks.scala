@@ -24,19 +24,27 @@ trait ScalaCheckPropertyChecks extends Whenever with Configuration:
 
   /** Checks `fun` on values drawn from 3 generators. */
   def forAll[A, B, C](genA: Gen[A], genB: Gen[B], genC: Gen[C], configParams: PropertyCheckConfigParam*)(fun: (A, B, C) => Any): Unit =
-    check(configParams, Seq(genA, genB, genC))((size, seeds) => fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds)))
+    check(
+      configParams, Seq(genA, genB, genC))((size, seeds) => fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds)))
 
   /** Checks `fun` on values drawn from 4 generators. */
-  def forAll[A, B, C, D](genA: Gen[A], genB: Gen[B], genC: Gen[C], genD: Gen[D], configParams: PropertyCheckConfigParam*)(fun: (A, B, C, D) => Any): Unit =
-    check(configParams, Seq(genA, genB, genC, genD))((size, seeds) => fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds), draw(genD, size, seeds)))
+  def forAll[A, B, C, D](genA: Gen[A], genB: Gen[B], genC: Gen[C], genD: Gen[D], configParams: PropertyCheckConfigParam*)(fun: (A, B, C,
+          D) => Any): Unit =
+    check(configParams, Seq(genA, genB, genC, genD))((size, seeds) =>
+      fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds), draw(genD, size, seeds)))
 
   /** Checks `fun` on values drawn from 5 generators. */
-  def forAll[A, B, C, D, E](genA: Gen[A], genB: Gen[B], genC: Gen[C], genD: Gen[D], genE: Gen[E], configParams: PropertyCheckConfigParam*)(fun: (A, B, C, D, E) => Any): Unit =
-    check(configParams, Seq(genA, genB, genC, genD, genE))((size, seeds) => fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds), draw(genD, size, seeds), draw(genE, size, seeds)))
+  def forAll[A, B, C, D, E](genA: Gen[A], genB: Gen[B], genC: Gen[C], genD: Gen[D], genE: Gen[E], configParams: PropertyCheckConfigParam*)(
+      fun: (A, B, C, D, E) => Any): Unit =
+    check(configParams, Seq(genA, genB, genC, genD, genE))((size, seeds) =>
+      fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds), draw(genD, size, seeds), draw(genE, size, seeds)))
 
   /** Checks `fun` on values drawn from 6 generators. */
-  def forAll[A, B, C, D, E, F](genA: Gen[A], genB: Gen[B], genC: Gen[C], genD: Gen[D], genE: Gen[E], genF: Gen[F], configParams: PropertyCheckConfigParam*)(fun: (A, B, C, D, E, F) => Any): Unit =
-    check(configParams, Seq(genA, genB, genC, genD, genE, genF))((size, seeds) => fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds), draw(genD, size, seeds), draw(genE, size, seeds), draw(genF, size, seeds)))
+  def forAll[A, B, C, D, E, F](genA: Gen[A], genB: Gen[B], genC: Gen[C], genD: Gen[D], genE: Gen[E], genF: Gen[F],
+      configParams: PropertyCheckConfigParam*)(fun: (A, B, C, D, E, F) => Any): Unit =
+    check(configParams, Seq(genA, genB, genC, genD, genE, genF))((size, seeds) =>
+      fun(draw(genA, size, seeds), draw(genB, size, seeds), draw(genC, size, seeds), draw(genD, size, seeds), draw(genE, size, seeds),
+        draw(genF, size, seeds)))
 
   /** Draws one value of `gen` at `size`, or discards the case when the generator rejects it. */
   private def draw[T](gen: Gen[T], size: Int, seeds: Iterator[Seed]): T =
@@ -67,5 +75,5 @@ trait ScalaCheckPropertyChecks extends Whenever with Configuration:
           val replay = Iterator.iterate(start)(_.next)
           val arguments = gens.map(g => g(Gen.Parameters.default.withSize(size), replay.next()))
           throw TestFailedException(s"property failed after $succeeded successful cases at " +
-            s"arguments ${arguments.map(_.fold("(rejected)")(_.toString)).mkString(", ")}: ${failure.getMessage}",
+              s"arguments ${arguments.map(_.fold("(rejected)")(_.toString)).mkString(", ")}: ${failure.getMessage}",
             failure, 0)

@@ -64,8 +64,9 @@ object BrowserBench:
     val peers = engines.filterNot(_.startsWith("SiMS"))
     val header = s"| scene | ${engines.mkString(" | ")} |\n|---|${engines.map(_ => "---:").mkString("|")}|\n"
     val body = scenes.map(s => s"| $s | ${engines.map(cell(s, _)).mkString(" | ")} |").mkString("\n")
-    val ratios = s"| scene | ${peers.map(p => s"$p / SiMS ClassicStep").mkString(" | ")} |\n|---|${peers.map(_ => "---:").mkString("|")}|\n" +
-      scenes.map(s => s"| $s | ${peers.map(ratio(s, _)).mkString(" | ")} |").mkString("\n")
+    val ratios =
+      s"| scene | ${peers.map(p => s"$p / SiMS ClassicStep").mkString(" | ")} |\n|---|${peers.map(_ => "---:").mkString("|")}|\n" +
+        scenes.map(s => s"| $s | ${peers.map(ratio(s, _)).mkString(" | ")} |").mkString("\n")
     val sanity = rows.map(r => s"| ${r.scene} | ${r.engine} | ${if r.ok then "ok" else "failed"} | ${r.detail} |").mkString("\n")
     // The tables go in after stripMargin, which would take the pipe off the start of their rows.
     s"""## Browser

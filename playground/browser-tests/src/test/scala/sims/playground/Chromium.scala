@@ -39,23 +39,24 @@ object Chromium:
   /** Serves `folder` on 127.0.0.1 and opens a headless Chromium of window size 1000 x 1000. */
   def open(folder: File): Chromium =
     val server = HttpServer.create(InetSocketAddress("127.0.0.1", 0), 0)
-    server.createContext("/", exchange => {
-      val relative = exchange.getRequestURI.getPath.stripPrefix("/")
-      val file = File(folder, if relative.isEmpty then "index.html" else relative).getCanonicalFile
-      if file.isFile && file.getPath.startsWith(folder.getCanonicalPath) then
-        val bytes = Files.readAllBytes(file.toPath)
-        val name = file.getName
-        val kind =
-          if name.endsWith(".html") then "text/html; charset=utf-8"
-          else if name.endsWith(".js") || name.endsWith(".mjs") then "text/javascript"
-          else if name.endsWith(".wasm") then "application/wasm"
-          else "application/octet-stream"
-        exchange.getResponseHeaders.add("Content-Type", kind)
-        exchange.sendResponseHeaders(200, bytes.length)
-        exchange.getResponseBody.write(bytes)
-      else exchange.sendResponseHeaders(404, -1)
-      exchange.close()
-    })
+    server.createContext("/",
+      exchange => {
+        val relative = exchange.getRequestURI.getPath.stripPrefix("/")
+        val file = File(folder, if relative.isEmpty then "index.html" else relative).getCanonicalFile
+        if file.isFile && file.getPath.startsWith(folder.getCanonicalPath) then
+          val bytes = Files.readAllBytes(file.toPath)
+          val name = file.getName
+          val kind =
+            if name.endsWith(".html") then "text/html; charset=utf-8"
+            else if name.endsWith(".js") || name.endsWith(".mjs") then "text/javascript"
+            else if name.endsWith(".wasm") then "application/wasm"
+            else "application/octet-stream"
+          exchange.getResponseHeaders.add("Content-Type", kind)
+          exchange.sendResponseHeaders(200, bytes.length)
+          exchange.getResponseBody.write(bytes)
+        else exchange.sendResponseHeaders(404, -1)
+        exchange.close()
+      })
     server.start()
     val profile = Files.createTempDirectory("sims-chromium-")
     val options = ChromeOptions()

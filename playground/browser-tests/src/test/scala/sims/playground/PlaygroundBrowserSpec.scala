@@ -10,7 +10,7 @@ import org.scalatest.BeforeAndAfterAll
 import org.scalatest.funsuite.AnyFunSuite
 import scala.jdk.CollectionConverters.*
 import sims.scenes.{PlatformHashesSpec, Scenes, StateFingerprint}
-import sims.solver.ClassicStep
+import sims.solver.{ClassicStep, SoftStep}
 
 /** The playground page (`playground/staticSite`) in headless Chromium, used as a person would:
   * the choosers, the buttons and the mouse; its state read through `window.simsPlayground`.
@@ -26,7 +26,8 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
       chromium = Some(Chromium.open(File(System.getProperty("sims.playground.site"))))
       val driver = chromium.get.driver
       driver.get(chromium.get.address("index.html"))
-      WebDriverWait(driver, Duration.ofSeconds(30)).until(d => script("return window.simsPlayground !== undefined") == java.lang.Boolean.TRUE)
+      WebDriverWait(
+        driver, Duration.ofSeconds(30)).until(d => script("return window.simsPlayground !== undefined") == java.lang.Boolean.TRUE)
 
   override def afterAll(): Unit = chromium.foreach(_.close())
 

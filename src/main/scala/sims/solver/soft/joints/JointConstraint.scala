@@ -1,7 +1,6 @@
 package sims.solver.soft.joints
 
-import sims.dynamics.joints.{DistanceJoint, ForceJoint, Joint, MotorJoint, MouseJoint, PrismaticJoint, RevoluteJoint,
-  WeldJoint, WheelJoint}
+import sims.dynamics.joints.{DistanceJoint, ForceJoint, Joint, MotorJoint, MouseJoint, PrismaticJoint, RevoluteJoint, WeldJoint, WheelJoint}
 import sims.solver.soft.SoftContext
 
 /** A joint as the soft step solves it (see docs/two-solvers.md): the joint says what is

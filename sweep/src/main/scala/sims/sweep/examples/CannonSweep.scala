@@ -45,8 +45,8 @@ object CannonSweep:
 
   /** Each box's place before the shot: row by row from the bottom, left to right. */
   val boxCentres: IndexedSeq[Vector2D] =
-    for row <- 0 until Rows; i <- 0 until Rows - row yield
-      Vector2D(PyramidX + (i - (Rows - row - 1) / 2.0) * Pitch, HalfSide + 2 * HalfSide * row)
+    for row <- 0 until Rows; i <- 0 until Rows - row
+    yield Vector2D(PyramidX + (i - (Rows - row - 1) / 2.0) * Pitch, HalfSide + 2 * HalfSide * row)
 
   /** The scene of one run: Cannon's ground, backstop and cannon ball (at the row's speed, in
     * the scene's direction), the pyramid of boxes, and every shape's material set to the row's
@@ -66,8 +66,9 @@ object CannonSweep:
   /** Boxes that ended at least half their side lower than they started: come down from their
     * row (the bottom row's boxes cannot, so at most 28 of the 36 do).
     */
-  val fallen: Metric = Metric("fallen", world =>
-    (0 until Boxes).count(i => world.bodies(FirstBox + i).pos.y < boxCentres(i).y - HalfSide).toDouble)
+  val fallen: Metric = Metric("fallen",
+    world =>
+      (0 until Boxes).count(i => world.bodies(FirstBox + i).pos.y < boxCentres(i).y - HalfSide).toDouble)
 
   /** How far the ball got: its centre's final x, m (the pyramid stands from 0.75 to 5.25). */
   val ballX: Metric = Metric("ballX", world => world.bodies.last.pos.x)

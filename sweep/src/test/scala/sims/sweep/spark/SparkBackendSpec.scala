@@ -10,7 +10,7 @@ import sims.sweep.examples.CannonSweep
 class SparkBackendSpec extends AnyFunSuite:
   // 12 runs of the example's scene, a second each: the shot reaches the pyramid within it.
   private val sweep = CannonSweep.sweep(Grid(
-    Axis.evenly("speed", 8, 20, 3), Axis.evenly("restitution", 0, 0.8, 2), Axis.evenly("friction", 0.3, 0.9, 2)))
+      Axis.evenly("speed", 8, 20, 3), Axis.evenly("restitution", 0, 0.8, 2), Axis.evenly("friction", 0.3, 0.9, 2)))
     .copy(stop = sims.sweep.Stop.after(60))
   private lazy val local = sweep.run(LocalBackend(2))
 
