@@ -48,8 +48,6 @@ lazy val root = (project in file("."))
     scmInfo := Release.scmInfo(baseDirectory.value),
     developers := List(Developer("sims-scala", "The SiMS for Scala contributors", "", homepage.value.orNull)),
     Compile / doc / scalacOptions ++= Seq("-doc-root-content", "docs/api-overview.md"),
-    // The JVM's side of the platform objects (the worker threads); Scala.js has its own in js/.
-    Compile / unmanagedSourceDirectories += baseDirectory.value / "src" / "main" / "scala-jvm",
     libraryDependencies ++= testDependencies,
     Test / parallelExecution := false,
     coverageMinimumStmtTotal := 90,
@@ -72,7 +70,6 @@ lazy val jvmOnlyTests = Set[String](
   "SoftBodiesLayoutSpec.scala",
   "DependenciesSpec.scala", // read the library's sources from the disk
   "ManifoldSpec.scala", // counts allocated bytes with the JVM's ThreadMXBean
-  "SoftStepWorkersSpec.scala", // counts the JVM's threads (Scala.js has one worker)
   "WorldCodecSpec.scala" // reads saved worlds from the class path's resources
 )
 
@@ -89,9 +86,7 @@ lazy val simsJS = (project in file("js"))
     homepage := (root / homepage).value,
     scmInfo := (root / scmInfo).value,
     developers := (root / developers).value,
-    // root's sources and the Scala.js side of the platform objects (one worker, no threads).
-    Compile / unmanagedSourceDirectories := Seq((root / baseDirectory).value / "src" / "main" / "scala",
-      baseDirectory.value / "src" / "main" / "scala"),
+    Compile / unmanagedSourceDirectories := Seq((root / baseDirectory).value / "src" / "main" / "scala"),
     Test / unmanagedSources ++= sharedTests((root / baseDirectory).value),
     Compile / doc / scalacOptions ++= Seq("-doc-root-content", ((root / baseDirectory).value / "docs" / "api-overview.md").toString),
     libraryDependencies ++= jsTestDependencies.value,

@@ -56,11 +56,6 @@ import sims.solver.soft.SoftBodies.*
   *   classic step uses with its detector's `gridSide`)
   * @param maxPairs the most candidate pairs a step may have; a step with more fails, changing
   *   nothing, with an IllegalStateException naming this limit
-  * @param workers how many threads share a step's contacts and bodies (the caller's and
-  *   `workers - 1` daemon threads shared by every world with this count; at least 1, 1 starts
-  *   none; by default the available processors, 1 on Scala.js). The contacts are solved in
-  *   colours (no two of a colour share a moving body), so the results are the same bits for any
-  *   number of workers. Not saved with a world: a loaded world uses the loading machine's.
   */
 final case class SoftStep(
     substeps: Int = Defaults.Substeps,
@@ -77,8 +72,7 @@ final case class SoftStep(
     contactLoadDepth: Double = Defaults.ContactLoadDepth,
     directJoints: Boolean = true,
     gridSide: Double = Defaults.GridSide,
-    maxPairs: Int = Defaults.MaxCandidatePairs,
-    workers: Int = Workers.available) extends Solver:
+    maxPairs: Int = Defaults.MaxCandidatePairs) extends Solver:
   if substeps < 1 then throw IllegalArgumentException(s"substeps must be at least 1, got $substeps")
   SoftStep.requirePositive("contactHertz", contactHertz)
   SoftStep.requireNonNegative("contactDampingRatio", contactDampingRatio)
@@ -93,10 +87,6 @@ final case class SoftStep(
   SoftStep.requireNonNegative("contactLoadDepth", contactLoadDepth)
   SoftStep.requirePositive("gridSide", gridSide)
   if maxPairs < 1 then throw IllegalArgumentException(s"maxPairs must be at least 1, got $maxPairs")
-  if workers < 1 then throw IllegalArgumentException(s"workers must be at least 1, got $workers")
-
-  // Made on the first step: a SoftStep that never steps starts no thread.
-  private lazy val pool: Workers = Workers(workers)
 
   def step(world: World): Unit =
     val workspace = world.workspace(classOf[SoftWorkspace], SoftWorkspace())
@@ -146,13 +136,9 @@ final case class SoftStep(
       bulletsOf(world).sweep(world)
       world.guard("continuous collision", Checked.Positions)
 
-  /** Every parameter by name, e.g. `SoftStep(substeps = 4, contactHertz = 30.0, ...)`; `workers`
-    * only when it is not the default (the machine's processors, which would make the same world
-    * print differently on another machine).
-    */
+  /** Every parameter by name, e.g. `SoftStep(substeps = 4, contactHertz = 30.0, ...)`. */
   override def toString: String =
-    productElementNames.zip(productIterator).filter((name, value) => name != "workers" || value != Workers.available)
-      .map((name, value) => s"$name = $value").mkString("SoftStep(", ", ", ")")
+    productElementNames.zip(productIterator).map((name, value) => s"$name = $value").mkString("SoftStep(", ", ", ")")
 
   /** The soft step reports the contacts that touch itself (see [[sims.solver.soft.ContactTouching]]). */
   override private[sims] def reportsTouching: Boolean = true
@@ -223,7 +209,7 @@ final case class SoftStep(
   private def prepare(workspace: SoftWorkspace, h: Double): Unit =
     val rate = 1 / h
     workspace.stiffness.set(contactHertz, 0.25 * rate, contactDampingRatio, staticContactFactor, contactLoadDepth, h)
-    workspace.passes.prepare(pool)
+    ContactConstraints.prepare(workspace.table.current, workspace.bodies, workspace.stiffness)
     val context = workspace.context
     context.bodies = workspace.bodies
     context.h = h
@@ -239,8 +225,27 @@ final case class SoftStep(
     * joints' forces are computed from the substep's placements and velocities.
     */
   private def integrateVelocities(world: World, workspace: SoftWorkspace, h: Double): Unit =
+    val bodies = workspace.bodies
     if workspace.joints.forceJoints.nonEmpty then applyForceJoints(workspace)
-    workspace.passes.integrateVelocities(pool, world.gravity.x, world.gravity.y, h)
+    val gx = world.gravity.x
+    val gy = world.gravity.y
+    val state = bodies.state
+    var i = 0
+    while i < bodies.count do
+      val m = bodies.invMass(i)
+      if m != 0 then
+        val k = i * SoftBodies.Stride
+        // Times the gravity scale, 1 unless the user set it: exact, the sums unchanged.
+        val scale = bodies.gravityScale(i)
+        state(k + VelocityX) += h * (gx * scale + bodies.substepForceX(i) * m)
+        state(k + VelocityY) += h * (gy * scale + bodies.substepForceY(i) * m)
+        state(k + AngularVelocity) += h * bodies.substepTorque(i) * bodies.invI(i)
+        if bodies.anyDamped then
+          state(k + VelocityX) *= bodies.linearDecay(i)
+          state(k + VelocityY) *= bodies.linearDecay(i)
+          state(k + AngularVelocity) *= bodies.angularDecay(i)
+      i += 1
+    ContactConstraints.addFreeMotion(workspace.table.current, bodies, gx, gy, h)
 
   /** The force joints' forces at the substep's placements and velocities, added to the user's. */
   private def applyForceJoints(workspace: SoftWorkspace): Unit =
@@ -274,12 +279,11 @@ final case class SoftStep(
     while i < joints.length do
       joints(i).warmStart(workspace.context)
       i += 1
-    workspace.passes.warmStart(pool)
+    ContactConstraints.warmStart(workspace.table.current, workspace.bodies)
 
   /** One pass over the constraints, with the bias (solve) or without (relax): a soft
-    * Gauss-Seidel sweep over the joints outside trees, then over the contacts colour by colour
-    * (each colour shared out among the workers), then the joint trees solved exactly
-    * ([[sims.solver.soft.joints.JointTrees]]); the joints on the caller alone.
+    * Gauss-Seidel sweep over the joints outside trees, then over the contacts, then the joint
+    * trees solved exactly ([[sims.solver.soft.joints.JointTrees]]).
     */
   private def solve(workspace: SoftWorkspace, useBias: Boolean): Unit =
     val trees = workspace.joints.trees
@@ -288,7 +292,7 @@ final case class SoftStep(
     while i < joints.length do
       joints(i).solve(workspace.context, useBias)
       i += 1
-    workspace.passes.solve(pool, workspace.context.inverseH, contactSpeed, useBias)
+    ContactConstraints.solve(workspace.table.current, workspace.bodies, workspace.context.inverseH, contactSpeed, useBias)
     // The trees last: their exact solve leaves every joint of a tree exact at the end of the
     // pass, where a contact solved after it would pull a pin open (measured: a ragdoll landing
     // opened its pins by up to 13 mm with the trees first, 1.3 mm with them last).
@@ -298,7 +302,23 @@ final case class SoftStep(
     * number, renormalised: no trigonometry per body and substep).
     */
   private def integratePositions(workspace: SoftWorkspace, h: Double): Unit =
-    workspace.passes.integratePositions(pool, h)
+    val bodies = workspace.bodies
+    val state = bodies.state
+    var i = 0
+    while i < bodies.count do
+      val k = i * SoftBodies.Stride
+      val vx = state(k + VelocityX); val vy = state(k + VelocityY); val w = state(k + AngularVelocity)
+      state(k + ShiftX) += h * vx
+      state(k + ShiftY) += h * vy
+      if w != 0 then
+        state(k + Turn) += h * w
+        val c = state(k + TurnCos); val s = state(k + TurnSin)
+        val turnedC = c - h * w * s
+        val turnedS = s + h * w * c
+        val length = math.sqrt(turnedC * turnedC + turnedS * turnedS)
+        state(k + TurnCos) = turnedC / length
+        state(k + TurnSin) = turnedS / length
+      i += 1
 
   private def applyRestitution(world: World, workspace: SoftWorkspace, h: Double): Unit =
     ContactConstraints.restitution(workspace.table.current, workspace.bodies, restitutionThreshold,

@@ -3,7 +3,6 @@ package sims.bench
 import java.util.concurrent.TimeUnit
 import org.openjdk.jmh.annotations.*
 import scala.compiletime.uninitialized
-import sims.solver.SoftStep
 
 /** Time of one step of a scene in one engine, after [[Settings.WarmUpSteps]] steps. The scene is
   * built once per fork and keeps running through warm-up and measurement; when the fork exits,
@@ -21,23 +20,13 @@ class StepBenchmark:
   @Param(Array("ballpit-500"))
   var scene: String = uninitialized
 
-  /** SiMS-soft's `SoftStep.workers`; 0, the default, keeps the engine's own (the available
-    * processors). `-p workers=1,2` measures the worker threads' speed-up within one run.
-    */
-  @Param(Array("0"))
-  var workers: Int = 0
-
   private var built: EngineScene = uninitialized
   private var steps = 0L
 
   /** Builds the scene and runs the warm-up steps. */
   @Setup(Level.Trial)
   def setup(): Unit =
-    val chosen = Engine.named(engine)
-    built =
-      if workers > 0 && chosen == Engine.SimsSoft then SimsBuilder.build(Settings.scene(scene), SoftStep(workers = workers))
-      else if workers > 0 then throw IllegalArgumentException(s"workers is a setting of SiMS-soft, not of $engine")
-      else chosen.build(Settings.scene(scene))
+    built = Engine.named(engine).build(Settings.scene(scene))
     var i = 0
     while i < Settings.WarmUpSteps do
       built.step()

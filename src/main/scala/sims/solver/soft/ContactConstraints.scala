@@ -20,18 +20,17 @@ import sims.solver.soft.SoftBodies.*
   */
 private[sims] object ContactConstraints:
 
-  /** Computes, for the contacts `from` until `until` (each writes only its own block), what
-    * stays fixed during the step: effective masses, the normal relative
+  /** Computes what stays fixed during the step: effective masses, the normal relative
     * velocity before the step, and the softness (stiffer against fixed bodies, and stiffened
     * under a heavy load, see [[ContactStiffness]]). The arms and separations are the collision
     * stage's.
     */
-  def prepare(contacts: Contacts, bodies: SoftBodies, stiffness: ContactStiffness, from: Int, until: Int): Unit =
+  def prepare(contacts: Contacts, bodies: SoftBodies, stiffness: ContactStiffness): Unit =
     val hot = contacts.hot
     val cold = contacts.cold
     val state = bodies.state
-    var c = from
-    while c < until do
+    var c = 0
+    while c < contacts.active do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
@@ -62,19 +61,13 @@ private[sims] object ContactConstraints:
       stiffness.set(contacts, c, mA == 0 || mB == 0)
       c += 1
 
-  /** Applies each point's accumulated impulses (from the last step, then from the substeps), for
-    * the contacts `order(from)` until `order(until)` (a colour's, see [[ContactColours]]): only
-    * the bodies that move are written.
-    */
-  def warmStart(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int): Unit =
+  /** Applies each point's accumulated impulses (from the last step, then from the substeps). */
+  def warmStart(contacts: Contacts, bodies: SoftBodies): Unit =
     val hot = contacts.hot
-    var i = from
-    while i < until do
-      val c = order(i)
+    var c = 0
+    while c < contacts.active do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
-      val movesA = bodies.moves(a)
-      val movesB = bodies.moves(b)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       var p = 0
@@ -85,22 +78,19 @@ private[sims] object ContactConstraints:
         // n normal + t tangent, t = n.leftNormal = (-ny, nx)
         val px = nx * normal - ny * tangent
         val py = ny * normal + nx * tangent
-        if movesA then bodies.applyImpulse(a, -px, -py, hot(q + AnchorAX), hot(q + AnchorAY))
-        if movesB then bodies.applyImpulse(b, px, py, hot(q + AnchorBX), hot(q + AnchorBY))
+        bodies.applyImpulse(a, -px, -py, hot(q + AnchorAX), hot(q + AnchorAY))
+        bodies.applyImpulse(b, px, py, hot(q + AnchorBX), hot(q + AnchorBY))
         p += 1
-      i += 1
+      c += 1
 
-  /** One pass over the contacts `order(from)` until `order(until)`: normal impulses (with the
-    * soft bias when `useBias`, the solve pass; without, the relax pass), then, in the relax pass,
-    * friction. Only the bodies that move are written (a colour's contacts may run at once).
+  /** One pass over all contacts: normal impulses (with the soft bias when `useBias`, the
+    * solve pass; without, the relax pass), then, in the relax pass, friction.
     */
-  def solve(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int, inverseH: Double,
-      contactSpeed: Double, useBias: Boolean): Unit =
+  def solve(contacts: Contacts, bodies: SoftBodies, inverseH: Double, contactSpeed: Double, useBias: Boolean): Unit =
     val hot = contacts.hot
     val state = bodies.state
-    var i = from
-    while i < until do
-      val c = order(i)
+    var c = 0
+    while c < contacts.active do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
@@ -176,24 +166,20 @@ private[sims] object ContactConstraints:
           vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
           vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
           p += 1
-      if bodies.moves(a) then
-        state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
-      if bodies.moves(b) then
-        state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
-      i += 1
+      state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
+      state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
+      c += 1
 
   /** Adds to each point's approach what the substep's gravity and forces (`integrateVelocities`)
     * changed of its normal velocity, while the point has not pushed yet this step: its approach
     * at impact, for restitution, is the one at the start of the step plus what gravity and
     * forces added before it (a ball falling onto the ground: the speed it hits with), and none
-    * of what other contacts did to the bodies within the step (see `restitution`). For the
-    * contacts `from` until `until`; each writes only its own points.
+    * of what other contacts did to the bodies within the step (see `restitution`).
     */
-  def addFreeMotion(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, h: Double, from: Int,
-      until: Int): Unit =
+  def addFreeMotion(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, h: Double): Unit =
     val hot = contacts.hot
-    var c = from
-    while c < until do
+    var c = 0
+    while c < contacts.active do
       val k = contacts.offset(c)
       if hot(k + Restitution) != 0 then
         var p = 0

@@ -14,6 +14,7 @@ import sims.solver.soft.ContactTable.*
 private[sims] final class ContactStiffness:
   private val normal = Softness()
   private val static = Softness()
+  private val stiffened = Softness()
   private var h, zeta, omega, maximumOmega, staticFactor, loadDepth = 0.0
 
   /** Sets the step's stiffness: `hertz` (capped at `maximumHertz`), damping `zeta`, substep `h`. */
@@ -30,10 +31,7 @@ private[sims] final class ContactStiffness:
   /** Writes the softness of contact c (against a fixed body if `isStatic`) into its hot block. */
   def set(contacts: Contacts, c: Int, isStatic: Boolean): Unit =
     val factor = if isStatic then staticFactor else 1.0
-    val soft = if isStatic then static else normal
-    var biasRate = soft.biasRate
-    var massScale = soft.massScale
-    var impulseScale = soft.impulseScale
+    var soft = if isStatic then static else normal
     if loadDepth > 0 then
       // The load as an acceleration of the effective mass: F / m = (impulse / h) / normalMass.
       val hot = contacts.hot
@@ -45,15 +43,9 @@ private[sims] final class ContactStiffness:
         p += 1
       val needed = math.min(math.sqrt(load / loadDepth), factor * maximumOmega)
       if needed > factor * omega then
-        // Softness.set's coefficients, in locals: contacts are prepared on several workers at once.
-        val stiffOmega = 2 * math.Pi * (needed / (2 * math.Pi))
-        val a1 = 2 * zeta + h * stiffOmega
-        val a2 = h * stiffOmega * a1
-        val a3 = 1 / (1 + a2)
-        biasRate = stiffOmega / a1
-        massScale = a2 * a3
-        impulseScale = a3
+        stiffened.set(needed / (2 * math.Pi), zeta, h)
+        soft = stiffened
     val k = contacts.offset(c)
-    contacts.hot(k + BiasRate) = biasRate
-    contacts.hot(k + MassScale) = massScale
-    contacts.hot(k + ImpulseScale) = impulseScale
+    contacts.hot(k + BiasRate) = soft.biasRate
+    contacts.hot(k + MassScale) = soft.massScale
+    contacts.hot(k + ImpulseScale) = soft.impulseScale

@@ -100,11 +100,6 @@ private[sims] final class SoftBodies:
       finite(state(i * Stride + AngularVelocity)) do i += 1
     if i < count then i else -1
 
-  /** Whether body i moves under impulses (not fixed, kinematic or asleep): only such bodies are
-    * written by the contact passes, so constraints that share only unmoving bodies may run at once.
-    */
-  inline def moves(i: Int): Boolean = invMass(i) != 0 || invI(i) != 0
-
   /** Adds the impulse (px, py) at arm (rx, ry) to body i's velocities. */
   inline def applyImpulse(i: Int, px: Double, py: Double, rx: Double, ry: Double): Unit =
     val k = i * Stride
