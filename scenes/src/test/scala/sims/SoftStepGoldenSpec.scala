@@ -9,7 +9,8 @@ import sims.solver.SoftStep
   * its results updates them in the same commit, saying why (unlike the classic step's, which
   * changed only once, for the portable elementary functions: see PerformanceRegressionSpec).
   * Changed for the portable elementary functions, then for restitution from the approach before
-  * the substeps and circles' manifolds computed every step (energy and angular momentum).
+  * the substeps and circles' manifolds computed every step (energy and angular momentum), then
+  * for the joint trees' compliance in the solve pass (a tree near a singular pose gained energy).
   */
 class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
   import PerformanceRegressionSpec.{golden, hash}
@@ -29,5 +30,5 @@ class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
   }
 
   test("golden-mixed under SoftStep after 240 steps") {
-    soft("golden-mixed", 240) shouldBe "4c1008cfed482ed7"
+    soft("golden-mixed", 240) shouldBe "6b64d179dff94fa2"
   }

@@ -30,9 +30,9 @@ object PlatformHashesSpec:
   val Expected: Seq[(String, (String, String))] = Seq(
     "Pyramid" -> ("dd5baa49fafec7ac", "337e370be403e1e9"),
     "BallStack" -> ("8db9759ae6989d8b", "6157c3541e1ab87f"),
-    "Ragdoll" -> ("e86196be7f7d6310", "b530a78ba59a0de9"),
+    "Ragdoll" -> ("e86196be7f7d6310", "e9763d5062cdd576"),
     "Chain" -> ("8abde10dfa3f46b7", "5ad0ec0a81a8e574"),
-    "Carriage" -> ("b61f7c5294100851", "c247da0317f3425e")
+    "Carriage" -> ("b61f7c5294100851", "523620889b477482")
   )
 
   /** Prints the table above for the current code (run with `scenes/Test/runMain`). */

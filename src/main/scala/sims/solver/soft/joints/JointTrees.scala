@@ -8,9 +8,10 @@ import sims.solver.soft.SoftBodies.*
   * in every pass it solves all the tree's joint rows at once, exactly, in time linear in the
   * number of joints (Baraff 1996, "Linear-time dynamics using Lagrange multipliers"), where
   * one Gauss-Seidel sweep per pass would pass a correction along a 100-link chain only one
-  * link per sweep. Being exact, it needs no softening for stability: its joints are rigid
-  * (the solve pass removes the whole position error C within the substep, bias C / h; the
-  * relax pass takes that velocity out again).
+  * link per sweep. Its joints are rigid: the solve pass removes the whole position error C
+  * within the substep (bias C / h), with a small compliance that keeps a tree near a singular
+  * pose from amplifying that bias without bound (see `setUp`); the relax pass is exact and
+  * takes the bias velocity out again.
   *
   * Derivation. With M the moving bodies' mass matrix (fixed bodies are not unknowns: their
   * velocities are given), J the rows' Jacobian and y = -dLambda, the velocity changes dv and
@@ -272,12 +273,35 @@ private[sims] final class JointTrees:
       if nodeIsJoint(node) then
         val joint = nodeRef(node)
         val k = rowCount(joint)
-        d(o) = 0; d(o + 1) = 0; d(o + 3) = 0; d(o + 4) = 0 // rigid: no softness on the diagonal
+        // A compliance G = Compliance K in the solve pass, K the joint's own effective mass
+        // matrix (its two bodies alone): J dv + Cdot + C / h + G (acc + dLambda) = 0, so D = -G
+        // and G acc on the right; the relax pass is exact (G = 0, no bias). Exact with bias, a
+        // tree near a singular pose (a light body between two links pulled straight) has a
+        // near-singular Schur complement and turned an error of centimetres into a velocity
+        // of km/s, which a contact solved in the same pass handed to a ball as momentum
+        // (kinetic energy up 2.7-fold in zero gravity); with G a joint's response to its error
+        // stays within about 1 / Compliance times what its own bodies alone would give.
+        val compliance = if useBias then JointTrees.Compliance else 0.0
+        val accumulated = direct(joint).impulse
         var r = 0
+        while r < k do
+          var q = 0
+          while q < k do
+            d(o + 3 * r + q) = -compliance *
+              (rowCoupling(joint, r, q, index1(joint), jacobian1, bodies) +
+                rowCoupling(joint, r, q, index2(joint), jacobian2, bodies))
+            q += 1
+          r += 1
+        r = 0
         while r < k do
           val cdot = rowVelocity(joint, r, state, index1(joint), jacobian1) + rowVelocity(joint, r, state, index2(joint), jacobian2)
           val bias = if useBias then positionError(2 * joint + r) * context.inverseH else 0.0
-          z(3 * node + r) = -(cdot + bias)
+          var held = 0.0
+          var q = 0
+          while q < k do
+            held -= d(o + 3 * r + q) * accumulated(q)
+            q += 1
+          z(3 * node + r) = -(cdot + bias + held)
           r += 1
         val parent = nodeParent(node)
         if parent >= 0 then
@@ -386,8 +410,25 @@ private[sims] final class JointTrees:
       SmallMatrix.multiply(dInverse, o, n, z, 3 * node, x, 3 * node)
       node += 1
 
+  /** Rows r and q of the joint's Jacobian for one body through that body's inverse mass:
+    * its part of the joint's own effective mass matrix J M^-1 J^T.
+    */
+  private def rowCoupling(joint: Int, r: Int, q: Int, body: Int, jacobian: Array[Double], bodies: SoftBodies): Double =
+    val a = 6 * joint + 3 * r
+    val b = 6 * joint + 3 * q
+    bodies.invMass(body) * (jacobian(a) * jacobian(b) + jacobian(a + 1) * jacobian(b + 1)) +
+      bodies.invI(body) * jacobian(a + 2) * jacobian(b + 2)
+
   /** Row r of the joint's Jacobian for one body times that body's velocity. */
   private def rowVelocity(joint: Int, r: Int, state: Array[Double], body: Int, jacobian: Array[Double]): Double =
     val k = body * SoftBodies.Stride
     val o = 6 * joint + 3 * r
     jacobian(o) * state(k + VelocityX) + jacobian(o + 1) * state(k + VelocityY) + jacobian(o + 2) * state(k + AngularVelocity)
+
+private[sims] object JointTrees:
+  /** The trees' compliance in the solve pass, relative to each joint's own effective mass: it
+    * stretches a joint under load by about Compliance g h^2 per unit of the load it carries
+    * (0.0002 mm at 4 substeps of 1/60 s), and bounds how far a near-singular tree amplifies an
+    * error into velocity.
+    */
+  val Compliance: Double = 0.001
