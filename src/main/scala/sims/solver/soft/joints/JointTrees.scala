@@ -287,9 +287,12 @@ private[sims] final class JointTrees:
         while r < k do
           var q = 0
           while q < k do
-            d(o + 3 * r + q) = -compliance *
-              (rowCoupling(joint, r, q, index1(joint), jacobian1, bodies) +
-                rowCoupling(joint, r, q, index2(joint), jacobian2, bodies))
+            d(o + 3 * r + q) =
+              if compliance == 0 then 0.0
+              else
+                -compliance *
+                  (rowCoupling(joint, r, q, index1(joint), jacobian1, bodies) +
+                    rowCoupling(joint, r, q, index2(joint), jacobian2, bodies))
             q += 1
           r += 1
         r = 0
