@@ -10,7 +10,9 @@ import sims.solver.{ClassicStep, SoftStep}
 class ScenesSpec extends AnyFunSuite:
   /** Simulated seconds per scene. */
   private val Seconds = 5.0
-  /** The pile is the one slow scene: it runs for less so the whole suite stays short. */
+  /** The pile is the one slow scene: it runs for less so the whole suite stays short (and is a
+    * [[sims.SlowTest]]).
+    */
   private val SecondsOf: Map[String, Double] = Map(Pile.name -> 2.0)
   /** Scenes known to leave their region under the classic step because of the solver, not the
     * scene: their region check is pending until the solver holds them (it then fails, asking
@@ -88,7 +90,9 @@ class ScenesSpec extends AnyFunSuite:
   for scene <- Scenes.all; soft <- Seq(false, true) if soft || !scene.softStepOnly do
     val seconds = SecondsOf.getOrElse(scene.name, Seconds)
     val solver = if soft then " under SoftStep" else ""
-    test(s"${scene.name} runs $seconds s$solver without NaN, its bodies inside ${scene.region}"):
+    // The pile's runs are the long simulations of this suite: the Node and coverage runs leave them out.
+    val tags = if SecondsOf.contains(scene.name) then Seq(sims.SlowTest) else Nil
+    test(s"${scene.name} runs $seconds s$solver without NaN, its bodies inside ${scene.region}", tags*):
       val staged = scene.build()
       val world = staged.world
       if soft then world.solver = SoftStep()

@@ -147,8 +147,10 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
 
   test("the page's state after 300 clicks on Step equals the JVM's, bit for bit"):
     choose("Chain", "ClassicStep")
-    val step = element("step")
-    for _ <- 1 to 300 do step.click()
+    // The first click through the driver (the pointer's path), the other 299 from the page's own
+    // script: the same click events, without a driver round trip each (40 s of CI's time).
+    element("step").click()
+    script("const step = document.getElementById('step'); for (let i = 1; i < 300; i++) step.click()")
     val info = element("info").getText
     val page = "state ([0-9a-f]{16})".r.findFirstMatchIn(info).map(_.group(1)).getOrElse(fail(s"no state in '$info'"))
     val world = Scenes.find("Chain").get.build().world
