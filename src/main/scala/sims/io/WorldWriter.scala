@@ -215,10 +215,7 @@ private[io] object WorldWriter:
           out.writeInt(if table.pointCount(c) > 1 then table.ids(2 * c + 1) else 0)
           out.writeInt(table.side(c))
           val hot = table.offset(c)
-          // The header's padding holds whatever an earlier contact left there: written as zeros.
-          for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do
-            val padding = k >= ContactTable.HeaderUsed && k < ContactTable.Header
-            out.writeDouble(if padding then 0.0 else table.hot(hot + k))
+          for k <- 0 until ContactTable.Header + table.pointCount(c) * ContactTable.HotPoint do out.writeDouble(table.hot(hot + k))
           // A contact has room for two points (ids, cold block); the slots of a missing one hold
           // whatever an earlier contact left there. Written as zeros: the same world, the same bytes.
           val used = ContactTable.ColdHeader + table.pointCount(c) * ContactTable.ColdPoint

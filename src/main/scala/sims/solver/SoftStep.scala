@@ -48,7 +48,8 @@ import sims.solver.soft.SoftBodies.*
   * @param contactPersistence a contact's manifold is kept (not computed again) while its bodies
   *   moved less than this relative to each other since it was computed, m; 0 computes every step
   * @param contactLoadDepth a contact whose load would press it deeper than this is stiffened
-  *   (up to 0.25 / substep), m; 0 keeps every contact at `contactHertz`
+  *   (up to 0.25 / substep, and not softened again while it lasts), m; 0 keeps every contact at
+  *   `contactHertz`
   * @param directJoints whether joints that form trees (chains, ragdolls) are solved exactly by
   *   the linear-time direct solver, as rigid constraints; otherwise every joint is solved by
   *   soft Gauss-Seidel sweeps with `jointHertz`, as in Box2D v3

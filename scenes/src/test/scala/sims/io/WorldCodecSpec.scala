@@ -226,22 +226,13 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     for _ <- 1 to 20 do world.step()
     world
 
-  test("a world saved in format version 1 loads and steps to the same bits as the world it was saved from") {
-    val stream = getClass.getResourceAsStream("/sims/io/world-format-1.bin")
-    val bytes = try stream.readAllBytes()
-    finally stream.close()
-    bytes(7) shouldBe 1 // the version's last byte: the file is of the old format
-    val loaded = WorldCodec.load(bytes)
-    val world = formatOneWorld()
-    StateHash(loaded) shouldBe StateHash(world)
-    // The format had no sleep state: loaded, every body is awake and has rested for 0 s, as the
-    // original's bodies once woken (the original's had rested for part of its 20 steps).
-    world.enableSleep = false
-    world.enableSleep = true
-    for _ <- 1 to 30 do
-      world.step()
-      loaded.step()
-    StateHash(loaded) shouldBe StateHash(world)
+  test("a world saved in format version 1 loads: its state, every body awake, and it steps on deterministically") {
+    val loaded = fixture(1)
+    // The format had no sleep state: loaded, every body is awake.
+    loaded.bodies.forall(_.isAwake) shouldBe true
+    // Its stack of four boxes settles 1.5 mm differently in 20 steps since loaded contacts keep
+    // their stiffness (the file is from before that): close within 5 mm.
+    closeAndDeterministic(loaded, formatOneWorld(), () => fixture(1), within = 5e-3)
     WorldCodec.save(loaded)(7) shouldBe WorldCodec.FormatVersion
   }
 
@@ -254,15 +245,15 @@ class WorldCodecSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     WorldCodec.load(bytes)
 
   /** A loaded fixture `loaded` against `world`, its scene stepped as many times by today's
-    * library: the same bodies in nearly the same places (not to the bit: the soft step's
+    * library: the same bodies in nearly the same places, `within` m and rad (not to the bit: the soft step's
     * restitution and the elementary functions changed since the files were written), and the
     * fixture, loaded twice, steps on to the same bits.
     */
-  private def closeAndDeterministic(loaded: World, world: World, again: () => World): Unit =
+  private def closeAndDeterministic(loaded: World, world: World, again: () => World, within: Double = 1e-3): Unit =
     loaded.bodies.length shouldBe world.bodies.length
     for (a, b) <- loaded.bodies.zip(world.bodies) do
-      (a.pos - b.pos).length should be < 1e-3
-      math.abs(a.rotation - b.rotation) should be < 1e-3
+      (a.pos - b.pos).length should be < within
+      math.abs(a.rotation - b.rotation) should be < within
     val twin = again()
     for _ <- 1 to 30 do
       loaded.step()

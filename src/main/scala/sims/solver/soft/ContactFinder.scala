@@ -193,7 +193,7 @@ private[sims] final class ContactFinder:
     val contacts = table.current
     val points = old.pointCount(last)
     val k = old.offset(last)
-    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points)
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0)
     contacts.side(c) = old.side(last)
     System.arraycopy(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
     System.arraycopy(old.cold, last * ColdStride, contacts.cold, c * ColdStride, ColdStride)
@@ -238,7 +238,7 @@ private[sims] final class ContactFinder:
     */
   private def addManifold(table: ContactTable, a: Shape, b: Shape, key: Long, last: Int): Unit =
     val contacts = table.current
-    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount)
+    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount, stiffnessOf(table, last))
     contacts.side(c) = manifold.polygonSide
     cachePlacements(contacts, c)
     val hot = contacts.hot
@@ -349,7 +349,7 @@ private[sims] final class ContactFinder:
     val contacts = table.current
     val points = old.pointCount(last)
     val k = old.offset(last)
-    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points)
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, old.hot(k + Stiffness))
     contacts.side(c) = old.side(last)
     val hot = contacts.hot
     val cold = contacts.cold
@@ -431,7 +431,7 @@ private[sims] final class ContactFinder:
       val contacts = table.current
       val nx = collision.normalX
       val ny = collision.normalY
-      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count)
+      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count, stiffnessOf(table, last))
       contacts.side(c) = -1
       val separation = -Collision.overlapAlong(collision.shape1, collision.shape2, nx, ny)
       var p = 0
@@ -459,7 +459,8 @@ private[sims] final class ContactFinder:
     * bodies, key and the pair's friction and restitution (products of the shapes', as in the
     * classic step).
     */
-  private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double, points: Int): Int =
+  private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double, points: Int,
+      stiffness: Double): Int =
     val c = contacts.add(points)
     contacts.shapeA(c) = a
     contacts.shapeB(c) = b
@@ -471,7 +472,12 @@ private[sims] final class ContactFinder:
     contacts.hot(k + NormalY) = ny
     contacts.hot(k + Friction) = a.friction * b.friction
     contacts.hot(k + Restitution) = a.restitution * b.restitution
+    contacts.hot(k + Stiffness) = stiffness
     c
+
+  /** The stiffness the last step's contact `last` of the pair had (0 if none: see [[ContactStiffness]]). */
+  private def stiffnessOf(table: ContactTable, last: Int): Double =
+    if last >= 0 then table.committed.hot(table.committed.offset(last) + Stiffness) else 0.0
 
 private object ContactFinder:
   /** A user kind's point takes over the impulses of a last-step point this close, m. */

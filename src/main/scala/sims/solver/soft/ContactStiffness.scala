@@ -9,7 +9,8 @@ import sims.solver.soft.ContactTable.*
   * heavier on two light ones: 11 cm at 30 Hz). Such a contact is made stiff enough to hold its
   * load within `loadDepth` (omega^2 = F / (m loadDepth)), never stiffer than `maximumHertz`
   * (0.25 / substep: stiffer contacts jitter in piles). Its load is known from warm starting:
-  * the force of its accumulated impulse over the last step.
+  * the force of its accumulated impulse over the last step. A stiffened contact keeps its
+  * stiffness while it lasts (the contact table carries it from step to step, see `Stiffness`).
   */
 private[sims] final class ContactStiffness:
   private val normal = Softness()
@@ -41,7 +42,11 @@ private[sims] final class ContactStiffness:
         val q = contacts.hotPoint(c, p)
         if hot(q + NormalMass) > 0 then load = math.max(load, hot(q + NormalImpulse) / (h * hot(q + NormalMass)))
         p += 1
-      val needed = math.min(math.sqrt(load / loadDepth), factor * maximumOmega)
+      val k = contacts.offset(c)
+      // Never softer than the pair was: a stiffness that follows the load step by step pumps
+      // energy into a loaded pile (a spring stiffer while compressed: parametric excitation).
+      val needed = math.max(math.min(math.sqrt(load / loadDepth), factor * maximumOmega), hot(k + Stiffness))
+      hot(k + Stiffness) = needed
       if needed > factor * omega then
         stiffened.set(needed / (2 * math.Pi), zeta, h)
         soft = stiffened

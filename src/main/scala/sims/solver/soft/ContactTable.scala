@@ -69,7 +69,7 @@ private[sims] object ContactTable:
   inline val BiasRate = 4
   inline val MassScale = 5
   inline val ImpulseScale = 6
-  inline val HeaderUsed = 7 // the rest of the header is padding
+  inline val Stiffness = 7 // the angular frequency a loaded contact was stiffened to (0: never)
   inline val Header = 8
   // Offsets in a point's hot block.
   inline val AnchorAX = 0 // arm from A's centre at the start of the step
