@@ -45,7 +45,8 @@ private[sims] final class ContactStiffness:
       val k = contacts.offset(c)
       // Never softer than the pair was: a stiffness that follows the load step by step pumps
       // energy into a loaded pile (a spring stiffer while compressed: parametric excitation).
-      val needed = math.max(math.min(math.sqrt(load / loadDepth), factor * maximumOmega), hot(k + Stiffness))
+      // Never beyond this step's limit either (the substeps or the pair's kind may have changed).
+      val needed = math.min(math.max(math.sqrt(load / loadDepth), hot(k + Stiffness)), factor * maximumOmega)
       hot(k + Stiffness) = needed
       if needed > factor * omega then
         stiffened.set(needed / (2 * math.Pi), zeta, h)

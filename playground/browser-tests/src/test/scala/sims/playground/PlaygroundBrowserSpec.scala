@@ -148,7 +148,7 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
   test("the page's state after 300 clicks on Step equals the JVM's, bit for bit"):
     choose("Chain", "ClassicStep")
     // The first click through the driver (the pointer's path), the other 299 from the page's own
-    // script: the same click events, without a driver round trip each (40 s of CI's time).
+    // script: the same click events, without a driver round trip for each.
     element("step").click()
     script("const step = document.getElementById('step'); for (let i = 1; i < 300; i++) step.click()")
     val info = element("info").getText
