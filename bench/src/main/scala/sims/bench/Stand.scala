@@ -6,12 +6,14 @@ import sims.solver.SoftStep
   * `pyramid-50` and `large_pyramid`), `--seconds S` of simulated time (default 10), then the
   * largest distance of a free body from its start and the largest speed, with the step's mean
   * time. Sleeping is off, as in the bench (`--sleep` turns it on, as the soft step's default).
-  * For development.
+  * `--trace N` prints, every N steps, the box farthest from its start (where it started, how far
+  * it moved across and up) and the highest box's drop. For development.
   */
 object Stand:
   def main(args: Array[String]): Unit =
     var seconds = 10.0
     var sleep = false
+    var trace = 0
     var solver = SoftStep()
     val scenes = Seq.newBuilder[String]
     val it = args.iterator
@@ -19,6 +21,7 @@ object Stand:
       it.next() match
         case "--seconds" => seconds = it.next().toDouble
         case "--sleep" => sleep = true
+        case "--trace" => trace = it.next().toInt
         case "--persistence" => solver = solver.copy(contactPersistence = it.next().toDouble)
         case "--load-depth" => solver = solver.copy(contactLoadDepth = it.next().toDouble)
         case "--hertz" => solver = solver.copy(contactHertz = it.next().toDouble)
@@ -36,7 +39,15 @@ object Stand:
       val start = free.map(b => (b.x, b.y))
       val steps = math.round(seconds / world.timeStep).toInt
       val began = System.nanoTime()
-      for _ <- 0 until steps do world.step()
+      val top = free.indices.maxBy(start(_)._2)
+      for step <- 1 to steps do
+        world.step()
+        if trace > 0 && step % trace == 0 then
+          val far = free.indices.maxBy(i => math.hypot(free(i).x - start(i)._1, free(i).y - start(i)._2))
+          val (x0, y0) = start(far)
+          println(f"  step $step%5d  farthest: box $far%4d from ($x0%.2f, $y0%.2f) moved ${(free(far).x - x0) * 100}%+.2f cm across " +
+            f"${(free(far).y - y0) * 100}%+.2f cm up;  top box ${(free(top).y - start(top)._2) * 100}%+.2f cm up;  speed max " +
+            f"${free.map(b => math.hypot(b.vx, b.vy)).max}%.3f m/s")
       val ms = (System.nanoTime() - began) / 1e6 / steps
       val drift = free.indices.map(i => math.hypot(free(i).x - start(i)._1, free(i).y - start(i)._2))
       val speed = free.map(b => math.hypot(b.vx, b.vy))
