@@ -27,6 +27,7 @@ object Stand:
         case "--hertz" => solver = solver.copy(contactHertz = it.next().toDouble)
         case "--damping" => solver = solver.copy(contactDampingRatio = it.next().toDouble)
         case "--substeps" => solver = solver.copy(substeps = it.next().toInt)
+        case "--contact-speed" => solver = solver.copy(contactSpeed = it.next().toDouble)
         case "--speculative" => solver = solver.copy(speculativeDistance = it.next().toDouble)
         case scene => scenes += scene
     val chosen = Some(scenes.result()).filter(_.nonEmpty).getOrElse(Seq("pyramid-50", "large_pyramid"))
