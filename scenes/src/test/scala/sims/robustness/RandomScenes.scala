@@ -44,24 +44,6 @@ object RandomScenes:
   // Shrinking would break the recipes' invariants (joint indices, distinct bodies).
   given Shrink[SceneSpec] = Shrink.shrinkAny
 
-  /** The recipe without the bodies that would overlap an earlier one at the start (bounding
-    * circles apart), and without their joints. The soft step pushes an overlap apart at up to
-    * `contactSpeed` per point, which adds kinetic energy by design; the energy law holds for
-    * the contacts that the motion makes.
-    */
-  def withoutOverlaps(spec: SceneSpec): SceneSpec =
-    val (bodies, joints) = spec
-    def reach(b: BodySpec): Double = if b.kind == 1 then b.size * math.sqrt(1.36) else b.size
-    val kept = bodies.indices.foldLeft(Vector.empty[Int]) { (kept, i) =>
-      val b = bodies(i)
-      if kept.forall { j =>
-          val o = bodies(j); math.hypot(o.x - b.x, o.y - b.y) > reach(o) + reach(b)
-        } then kept :+ i
-      else kept
-    }
-    val index = kept.zipWithIndex.toMap
-    (kept.map(bodies).toList, joints.collect { case (a, b, s) if index.contains(a) && index.contains(b) => (index(a), index(b), s) })
-
   /** The world of a recipe, with or without gravity and springs, stepped by `solver`. */
   def build(spec: SceneSpec, gravity: Boolean, springs: Boolean,
       solver: Solver): World =

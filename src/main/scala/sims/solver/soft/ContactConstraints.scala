@@ -15,10 +15,23 @@ import sims.solver.soft.SoftBodies.*
   *   lambda = -normalMass massScale (vn + bias) - impulseScale lambdaAcc, then lambdaAcc >= 0
   * with the bias and scales of the soft rule: s > 0 (speculative) pushes only what would
   * close the gap within the substep (bias s / h, rigid); an overlap is pushed out softly, at
-  * most `contactSpeed` fast, in the solve pass, and not at all in the relax pass. Friction:
+  * most `contactSpeed` fast (softer still where that cap binds, `DeepMassScale`), in the solve
+  * pass, and not at all in the relax pass. Friction:
   * lambdaT = -tangentMass vt, the accumulated value within [-mu lambdaAcc, mu lambdaAcc].
   */
 private[sims] object ContactConstraints:
+
+  /** The mass scale (and 1 - it the impulse scale) of a point overlapping so deeply that its
+    * push is capped at `contactSpeed`. With the contact's own softness, two such pushes that
+    * balance (a body jammed between two fixed shapes, or held inside one by a joint) each
+    * accumulate normalMass contactSpeed massScale / impulseScale, 16 to 73 times
+    * normalMass contactSpeed at the defaults (30 to 120 Hz), and when one side let go (a new manifold with
+    * new feature ids, the body turning) the other's warm start flung the body at that many
+    * times contactSpeed (kinetic energy up to 195 times the start's in random scenes). Half
+    * and half bound the balance at normalMass contactSpeed: what one push alone may give. No
+    * load reaches this depth: it would take at least 1,200 g of load per unit of effective mass.
+    */
+  inline val DeepMassScale = 0.5
 
   /** Computes what stays fixed during the step: effective masses, the normal relative
     * velocity before the step, and the softness (stiffer against fixed bodies, and stiffened
@@ -120,9 +133,16 @@ private[sims] object ContactConstraints:
         var impulseScale = 0.0
         if s > 0 then bias = s * inverseH // speculative: may close the gap, no more
         else if useBias then
-          bias = math.max(hot(k + BiasRate) * s, -contactSpeed)
-          massScale = hot(k + MassScale)
-          impulseScale = hot(k + ImpulseScale)
+          val push = hot(k + BiasRate) * s
+          if push >= -contactSpeed then
+            bias = push
+            massScale = hot(k + MassScale)
+            impulseScale = hot(k + ImpulseScale)
+          else
+            // Deeper than the push's cap: see DeepMassScale.
+            bias = -contactSpeed
+            massScale = DeepMassScale
+            impulseScale = 1 - DeepMassScale
         val dvx = vBx - wB * rBy - vAx + wA * rAy
         val dvy = vBy + wB * rBx - vAy - wA * rAx
         val vn = dvx * nx + dvy * ny
