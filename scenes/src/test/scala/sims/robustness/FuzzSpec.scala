@@ -18,6 +18,12 @@ class FuzzSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
   private def kinetic(world: World): Double = world.bodies.filterNot(_.fixed).map(b =>
     0.5 * b.mass * (b.linearVelocity dot b.linearVelocity) + 0.5 * b.I * b.angularVelocity * b.angularVelocity).sum
 
+  // The highest kinetic energy over the next `steps` steps.
+  private def highestKinetic(world: World, steps: Int): Double = (1 to steps).foldLeft(0.0) { (highest, _) =>
+    world.step()
+    math.max(highest, kinetic(world))
+  }
+
   for solver <- Seq(ClassicStep, SoftStep()) do
     val name = sims.dynamics.StepGuard.solverName(solver)
 
@@ -51,11 +57,7 @@ class FuzzSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
         val spec = sceneSpec.pureApply(org.scalacheck.Gen.Parameters.default, org.scalacheck.rng.Seed(seed))
         val world = build(spec, gravity = false, springs = false, solver)
         val start = kinetic(world)
-        var highest = 0.0
-        for _ <- 1 to 2000 do
-          world.step()
-          highest = math.max(highest, kinetic(world))
-        withClue(s"recipe of seed $seed: ") { highest should be <= 1.05 * start + 1e-9 }
+        withClue(s"recipe of seed $seed: ") { highestKinetic(world, 2000) should be <= 1.05 * start + 1e-9 }
         finite(world) shouldBe true
     }
 
@@ -66,11 +68,7 @@ class FuzzSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
       // here (kinetic energy 2.7 times the start's, found by the property above).
       val world = build(Whip, gravity = false, springs = false, solver)
       val start = kinetic(world)
-      var highest = 0.0
-      for _ <- 1 to 600 do
-        world.step()
-        highest = math.max(highest, kinetic(world))
-      highest should be <= 1.05 * start
+      highestKinetic(world, 600) should be <= 1.05 * start
       finite(world) shouldBe true
     }
 

@@ -24,12 +24,11 @@ private[sims] object ContactConstraints:
   /** The mass scale (and 1 - it the impulse scale) of a point overlapping so deeply that its
     * push is capped at `contactSpeed`. With the contact's own softness, two such pushes that
     * balance (a body jammed between two fixed shapes, or held inside one by a joint) each
-    * accumulate normalMass contactSpeed massScale / impulseScale, 16 to 73 times
-    * normalMass contactSpeed at the defaults (30 to 120 Hz), and when one side let go (a new manifold with
-    * new feature ids, the body turning) the other's warm start flung the body at that many
-    * times contactSpeed (kinetic energy up to 195 times the start's in random scenes). Half
-    * and half bound the balance at normalMass contactSpeed: what one push alone may give. No
-    * load reaches this depth: it would take at least 1,200 g of load per unit of effective mass.
+    * accumulate normalMass contactSpeed massScale / impulseScale, 16 to 73 times normalMass
+    * contactSpeed at the defaults (30 to 120 Hz); when one side lets go (new feature ids, the
+    * body turning) the other's warm start flings the body at that many times contactSpeed.
+    * Half and half bound the balance at normalMass contactSpeed, what one push alone may give.
+    * No load reaches this depth: it would take at least 1,200 g per unit of effective mass.
     */
   inline val DeepMassScale = 0.5
 
