@@ -1,7 +1,7 @@
 package sims.collision
 
 import sims.dynamics.Circle
-import sims.geometry.Vector2D
+import sims.geometry.{Reach, Vector2D}
 
 /** Collision of two circles. Normal: from the centre of `circle1` to that of `circle2`
   * (straight up if the centres coincide); one point: on the outline of `circle1`,
@@ -19,7 +19,7 @@ final class CircleCollision(circle1: Circle, circle2: Circle) extends Collision:
 
   /** Recomputes this collision for the two circles from their current positions. */
   private[collision] def compute(c1: Circle, c2: Circle): Unit =
-    compute(c1, c2, math.sqrt((c2.x - c1.x) * (c2.x - c1.x) + (c2.y - c1.y) * (c2.y - c1.y)))
+    compute(c1, c2, math.sqrt(CircleCollision.centreDistanceSquared(c1, c2)))
 
   /** `compute` with the distance of the centres already known (from the test). */
   private[collision] def compute(c1: Circle, c2: Circle, distance: Double): Unit =
@@ -37,13 +37,10 @@ final class CircleCollision(circle1: Circle, circle2: Circle) extends Collision:
 /** The circle-circle narrowphase test. */
 object CircleCollision:
   /** True when the circles touch or overlap: `|c1 - c2| - (r1 + r2) <= 0`. */
-  def colliding(c1: Circle, c2: Circle): Boolean =
-    val dx = c1.x - c2.x
-    val dy = c1.y - c2.y
-    math.sqrt(dx * dx + dy * dy) - (c1.radius + c2.radius) <= 0
+  def colliding(c1: Circle, c2: Circle): Boolean = Reach.within(centreDistanceSquared(c1, c2), c1.radius + c2.radius)
 
-  /** Distance of the centres; the same value as `colliding` and `compute` use (the squares of
-    * c1 - c2 and c2 - c1 are identical), so the narrowphase computes it once for both.
+  /** The square of the centres' distance; the same value as `colliding` and `compute` use (the
+    * squares of c1 - c2 and c2 - c1 are identical), so the narrowphase computes it once for both.
     */
-  private[collision] inline def centreDistance(c1: Circle, c2: Circle): Double =
-    math.sqrt((c2.x - c1.x) * (c2.x - c1.x) + (c2.y - c1.y) * (c2.y - c1.y))
+  private[collision] inline def centreDistanceSquared(c1: Circle, c2: Circle): Double =
+    (c2.x - c1.x) * (c2.x - c1.x) + (c2.y - c1.y) * (c2.y - c1.y)

@@ -1,7 +1,7 @@
 package sims.collision
 
 import sims.dynamics.{Circle, Shape}
-import sims.geometry.{ConvexPolygon, PolygonMath, Segment, Vector2D}
+import sims.geometry.{ConvexPolygon, PolygonMath, Reach, Segment, Vector2D}
 
 /** Collision of a convex polygon (the reference) and a circle. The normal is the outward normal
   * of the side the circle penetrates deepest, `(distance to side) - r`, unless a vertex
@@ -66,6 +66,6 @@ object PolyCircleCollision:
     var i = 0
     while !near && i < count do
       val j = PolygonMath.next(i, count)
-      if Segment.distance(xs(i), ys(i), xs(j), ys(j), circle.x, circle.y) - circle.radius <= 0 then near = true
+      if Reach.within(Segment.squaredDistance(xs(i), ys(i), xs(j), ys(j), circle.x, circle.y), circle.radius) then near = true
       i += 1
     near || PolygonMath.contains(xs, ys, count, circle.x, circle.y)

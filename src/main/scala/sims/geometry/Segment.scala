@@ -26,6 +26,10 @@ final case class Segment(vertex1: Vector2D, vertex2: Vector2D):
 object Segment:
   /** Distance from (px, py) to the segment (ax, ay)-(bx, by). */
   private[sims] def distance(ax: Double, ay: Double, bx: Double, by: Double, px: Double, py: Double): Double =
+    math.sqrt(squaredDistance(ax, ay, bx, by, px, py))
+
+  /** The square of `distance`, the same bits before the square root. */
+  private[sims] def squaredDistance(ax: Double, ay: Double, bx: Double, by: Double, px: Double, py: Double): Double =
     val dx = bx - ax
     val dy = by - ay
     val dd = dx * dx + dy * dy
@@ -35,4 +39,4 @@ object Segment:
     val cy = if t <= 0 then ay else if t >= 1 then by else ay + dy * t
     val ex = cx - px
     val ey = cy - py
-    math.sqrt(ex * ex + ey * ey)
+    ex * ex + ey * ey

@@ -3,6 +3,7 @@ package sims.collision.narrowphase
 import sims.collision.{CircleCollision, Collision, ShapeSeparation}
 import sims.collision.manifold.{CircleManifold, Manifold}
 import sims.dynamics.{Circle, Shape}
+import sims.geometry.Reach
 
 /** The circle's entries in the narrowphase registry: circle against circle. */
 private[sims] object CirclePairs:
@@ -17,10 +18,10 @@ private[sims] object CirclePairs:
     def collide(slot: PairSlot, a: Shape, b: Shape, pool: CollisionPool): Collision =
       val c1 = a.asInstanceOf[Circle]
       val c2 = b.asInstanceOf[Circle]
-      val distance = CircleCollision.centreDistance(c1, c2)
-      if !(distance - (c1.radius + c2.radius) <= 0) then null
+      val squared = CircleCollision.centreDistanceSquared(c1, c2)
+      if !Reach.within(squared, c1.radius + c2.radius) then null
       else if slot.circle == null then { slot.circle = CircleCollision(c1, c2); slot.circle }
-      else { slot.circle.compute(c1, c2, distance); slot.circle }
+      else { slot.circle.compute(c1, c2, math.sqrt(squared)); slot.circle }
 
     def manifold(a: Shape, b: Shape, lastSide: Int, speculativeDistance: Double, linearSlop: Double,
         out: Manifold): Unit =
