@@ -16,8 +16,7 @@ private[sims] object Reach:
   /** Whether `sqrt(squared) - reach <= 0`, computed in doubles. */
   def within(squared: Double, reach: Double): Boolean =
     val reachSquared = reach * reach
-    if reachSquared > Smallest && reachSquared < Largest then
-      if squared > reachSquared * (1 + Margin) then false
-      else if squared < reachSquared * (1 - Margin) then true
-      else math.sqrt(squared) - reach <= 0
+    val normal = reachSquared > Smallest && reachSquared < Largest
+    if normal && squared > reachSquared * (1 + Margin) then false
+    else if normal && squared < reachSquared * (1 - Margin) then true
     else math.sqrt(squared) - reach <= 0
