@@ -97,18 +97,7 @@ abstract class Collision extends Constraint:
     val ny = normalY
     var i = 0
     while i < pointCount do
-      val px = pointXs(i)
-      val py = pointYs(i)
-      val overlap = Collision.overlapAlong(shape1, shape2, nx, ny)
-      val c = sims.Defaults.ToleratedOverlap - overlap
-      if c <= 0 then
-        val r1x = px - b1.x; val r1y = py - b1.y
-        val r2x = px - b2.x; val r2y = py - b2.y
-        val m = Collision.effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
-        val impulseX = -nx * m * c
-        val impulseY = -ny * m * c
-        b1.displace(-impulseX * b1.invMass, -impulseY * b1.invMass, -(r1x * impulseY - r1y * impulseX) * b1.invI)
-        b2.displace(impulseX * b2.invMass, impulseY * b2.invMass, (r2x * impulseY - r2y * impulseX) * b2.invI)
+      Collision.correctPositionAt(b1, b2, pointXs(i), pointYs(i), nx, ny, Collision.overlapAlong(shape1, shape2, nx, ny))
       i += 1
 
   override def toString: String =
@@ -149,6 +138,21 @@ object Collision:
     vx * dx + vy * dy
 
   /** 1 / (1/m1 + (r1 x d)^2/I1 + 1/m2 + (r2 x d)^2/I2), 0 when both bodies are fixed. */
+  /** Position correction at one contact point p = (px, py), with the shapes' current `overlap`
+    * along the normal n: C = 0.01 - overlap, corrected only when C <= 0, by P = -n m C.
+    */
+  private[sims] inline def correctPositionAt(b1: sims.dynamics.Body, b2: sims.dynamics.Body, px: Double, py: Double,
+      nx: Double, ny: Double, overlap: Double): Unit =
+    val c = sims.Defaults.ToleratedOverlap - overlap
+    if c <= 0 then
+      val r1x = px - b1.x; val r1y = py - b1.y
+      val r2x = px - b2.x; val r2y = py - b2.y
+      val m = effectiveMass(b1, b2, r1x, r1y, r2x, r2y, nx, ny)
+      val impulseX = -nx * m * c
+      val impulseY = -ny * m * c
+      b1.displace(-impulseX * b1.invMass, -impulseY * b1.invMass, -(r1x * impulseY - r1y * impulseX) * b1.invI)
+      b2.displace(impulseX * b2.invMass, impulseY * b2.invMass, (r2x * impulseY - r2y * impulseX) * b2.invI)
+
   private[sims] inline def effectiveMass(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
       r1x: Double, r1y: Double, r2x: Double, r2y: Double, dx: Double, dy: Double): Double =
     val cr1 = r1x * dy - r1y * dx
