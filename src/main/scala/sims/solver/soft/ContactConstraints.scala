@@ -155,9 +155,12 @@ private[sims] object ContactConstraints:
         if !useBias then hot(q + TotalNormalImpulse) += total
         // The first push's gap: positive when a solve pass pushed (the gap at the start of the
         // substep it meets in), negative when a relax pass did (its gap after the substep's
-        // positions: it meets in the next substep), 0 when the bodies touched already.
-        if impulse > 0 && hot(q + MaxNormalImpulse) == 0 && s > 0 then hot(q + ImpactGap) = if useBias then s else -s
-        if impulse > hot(q + MaxNormalImpulse) then hot(q + MaxNormalImpulse) = impulse
+        // positions: it meets in the next substep), 0 when the bodies touched already. The test
+        // of s comes first: known before the impulse and false at resting points, it keeps the
+        // branch from waiting on the impulse's long chain of arithmetic.
+        val strongest = hot(q + MaxNormalImpulse)
+        if s > 0 && impulse > 0 && strongest == 0 then hot(q + ImpactGap) = if useBias then s else -s
+        if impulse > strongest then hot(q + MaxNormalImpulse) = impulse
         val px = impulse * nx; val py = impulse * ny
         vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
         vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
