@@ -137,7 +137,6 @@ object Collision:
     val vy = (b2.vy + b2.w * r2x) - (b1.vy + b1.w * r1x)
     vx * dx + vy * dy
 
-  /** 1 / (1/m1 + (r1 x d)^2/I1 + 1/m2 + (r2 x d)^2/I2), 0 when both bodies are fixed. */
   /** Position correction at one contact point p = (px, py), with the shapes' current `overlap`
     * along the normal n: C = 0.01 - overlap, corrected only when C <= 0, by P = -n m C.
     */
@@ -153,6 +152,7 @@ object Collision:
       b1.displace(-impulseX * b1.invMass, -impulseY * b1.invMass, -(r1x * impulseY - r1y * impulseX) * b1.invI)
       b2.displace(impulseX * b2.invMass, impulseY * b2.invMass, (r2x * impulseY - r2y * impulseX) * b2.invI)
 
+  /** 1 / (1/m1 + (r1 x d)^2/I1 + 1/m2 + (r2 x d)^2/I2), 0 when both bodies are fixed. */
   private[sims] inline def effectiveMass(b1: sims.dynamics.Body, b2: sims.dynamics.Body,
       r1x: Double, r1y: Double, r2x: Double, r2y: Double, dx: Double, dy: Double): Double =
     val cr1 = r1x * dy - r1y * dx
