@@ -70,6 +70,7 @@ lazy val jvmOnlyTests = Set[String](
   "SoftBodiesLayoutSpec.scala",
   "DependenciesSpec.scala", // read the library's sources from the disk
   "ManifoldSpec.scala", // counts allocated bytes with the JVM's ThreadMXBean
+  "StepAllocationSpec.scala", // the same
   "WorldCodecSpec.scala" // reads saved worlds from the class path's resources
 )
 

@@ -238,7 +238,9 @@ object Shape:
 
   /** Fails unless `value` is finite and strictly positive. */
   private[sims] def requirePositive(name: String, value: Double): Double =
-    if !(value > 0) || value.isInfinite then
+    // java.lang.Double's static tests: `value.isInfinite` would box the value (the broadphase
+    // checks its grid side with this at every step).
+    if !(value > 0) || java.lang.Double.isInfinite(value) then
       throw IllegalArgumentException(s"$name must be positive and finite, got $value")
     value
 
@@ -248,7 +250,7 @@ object Shape:
     * product, and the solvers divide by mass and inertia.
     */
   private[sims] def requireDerived(owner: String, name: String, value: Double): Double =
-    if !(value > 0) || value.isInfinite || (1 / value).isInfinite then
+    if !(value > 0) || java.lang.Double.isInfinite(value) || java.lang.Double.isInfinite(1 / value) then
       throw IllegalArgumentException(
         s"$owner: its $name would be $value, not a positive finite number with a finite inverse; " +
           "the arguments are too large or too small")
@@ -262,6 +264,6 @@ object Shape:
 
   /** Fails unless `value` is finite and at least 0. */
   private[sims] def requireNonNegative(name: String, value: Double): Double =
-    if !(value >= 0) || value.isInfinite then
+    if !(value >= 0) || java.lang.Double.isInfinite(value) then
       throw IllegalArgumentException(s"$name must be finite and at least 0, got $value")
     value

@@ -32,6 +32,9 @@ trait SolverChoice:
 
   /** Why the classic step cannot step `joint`, or None. */
   private def classicStepProblem(joint: Joint): Option[String] =
-    joint.softStepFeature.map(feature =>
-      s"$joint has $feature, which ClassicStep (SiMS 1.2's step) cannot step: use the soft step, " +
-        "world.solver = SoftStep()")
+    // A match, not `map`: checked for every joint before every step, it must not allocate.
+    joint.softStepFeature match
+      case Some(feature) =>
+        Some(s"$joint has $feature, which ClassicStep (SiMS 1.2's step) cannot step: use the soft step, " +
+          "world.solver = SoftStep()")
+      case None => None

@@ -64,7 +64,7 @@ trait StepGuard:
 
   /** Why the solver cannot step `joint` (see `Joint.forceIntervalProblem`), or None. */
   protected def forceIntervalProblem(joint: sims.dynamics.joints.Joint): Option[String] =
-    joint.forceIntervalProblem(solver.forceInterval(this), StepGuard.solverName(solver))
+    joint.forceIntervalProblem(solver.forceInterval(this), solver)
 
   /** Fails the step under way with an ArithmeticException naming the body and `stage` if any
     * body's `checked` quantity is not finite; `step()` then restores the world. For solvers.

@@ -122,6 +122,6 @@ object Vector2D:
 
   /** Checks that `value` is finite; otherwise throws an IllegalArgumentException naming `name`. */
   private[sims] def requireFinite(name: String, value: Double): Double =
-    if value.isNaN || value.isInfinite then
+    if !java.lang.Double.isFinite(value) then
       throw IllegalArgumentException(s"$name must be finite, got $value")
     value

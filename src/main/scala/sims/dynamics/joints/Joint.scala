@@ -110,8 +110,8 @@ abstract class Joint extends Constraint:
   private[sims] def bodiesIn(world: World): Boolean = (node1.world eq world) && (node2.world eq world)
 
   /** Why this joint cannot be stepped by a solver that integrates forces over intervals of `h`
-    * seconds (its force interval; `solverName` for the message), or None. A spring too stiff
+    * seconds (its force interval; `solver` is named in the message), or None. A spring too stiff
     * for the interval diverges (see [[SpringJoint]]); the world checks this when the joint joins
-    * it and before every step.
+    * it and before every step, so the check allocates nothing unless it fails.
     */
-  private[sims] def forceIntervalProblem(h: Double, solverName: String): Option[String] = None
+  private[sims] def forceIntervalProblem(h: Double, solver: AnyRef): Option[String] = None

@@ -86,12 +86,12 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
     * beyond before any value overflows, so the state a failed step would restore is ruined
     * already: it is refused instead.
     */
-  override private[sims] def forceIntervalProblem(h: Double, solverName: String): Option[String] =
+  override private[sims] def forceIntervalProblem(h: Double, solver: AnyRef): Option[String] =
     val number = stabilityNumber(h)
     if number < SpringJoint.StabilityLimit then None
     else
       Some(s"$this is too stiff for the time step: (k h^2 + 2 c h) / m = $number with " +
-        s"h = $h s ($solverName's force interval) and c = $damping N s/m; " +
+        s"h = $h s (${sims.dynamics.StepGuard.solverName(solver)}'s force interval) and c = $damping N s/m; " +
         s"springs integrated explicitly diverge from ${SpringJoint.StabilityLimit} on. Lower springConstant or " +
         "damping, make the bodies heavier or shorten the time step (or, with SoftStep, use more substeps)")
 

@@ -1,0 +1,45 @@
+package sims.solver
+
+import java.lang.management.ManagementFactory
+import org.scalatest.funsuite.AnyFunSuite
+import org.scalatest.matchers.should.Matchers
+import sims.dynamics.{Circle, World}
+import sims.dynamics.joints.DistanceJoint
+import sims.geometry.Vector2D
+
+/** A running world's step allocates (nearly) nothing: the checks it makes of every joint before
+  * every step, and the broadphase's check of its settings, build no message, closure or boxed
+  * number unless they fail.
+  */
+class StepAllocationSpec extends AnyFunSuite with Matchers:
+  private val threads = ManagementFactory.getThreadMXBean.asInstanceOf[com.sun.management.ThreadMXBean]
+
+  /** A chain of `links` balls on distance joints, hanging at rest from a fixed ball. */
+  private def chain(solver: Solver, links: Int): World =
+    val world = World()
+    world.solver = solver
+    val pivot = Circle(0.1, 1).asBody
+    pivot.fixed = true
+    world += pivot
+    var last = pivot
+    for i <- 1 to links do
+      val ball = Circle(0.1, 1).asBody
+      ball.pos = Vector2D(0, -0.25 * i)
+      world += ball
+      world += DistanceJoint(last, last.pos, ball, ball.pos)
+      last = ball
+    world
+
+  private def bytesPerStep(world: World, steps: Int): Double =
+    for _ <- 1 to 2000 do world.step() // let the JIT compile the step
+    val before = threads.getCurrentThreadAllocatedBytes
+    for _ <- 1 to steps do world.step()
+    (threads.getCurrentThreadAllocatedBytes - before).toDouble / steps
+
+  test("the classic step of a 100-link chain allocates under 100 bytes a step") {
+    bytesPerStep(chain(ClassicStep, 100), 1000) should be < 100.0
+  }
+
+  test("the soft step of a 100-link chain allocates under 100 bytes a step") {
+    bytesPerStep(chain(SoftStep(), 100), 1000) should be < 100.0
+  }
