@@ -102,7 +102,7 @@ object Vector2D:
   private val SmallestSafeSquare = java.lang.Double.MIN_NORMAL * (1L << 53).toDouble
   private val LargestSafeSquare = Double.MaxValue
 
-  private inline def safeSquare(squared: Double): Boolean =
+  private[sims] inline def safeSquare(squared: Double): Boolean =
     squared >= SmallestSafeSquare && squared <= LargestSafeSquare
 
   /** The length of (x, y) when x^2 + y^2 over- or underflows: scaled by the larger component. */

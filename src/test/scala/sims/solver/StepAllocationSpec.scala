@@ -4,12 +4,12 @@ import java.lang.management.ManagementFactory
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import sims.dynamics.{Circle, World}
-import sims.dynamics.joints.DistanceJoint
+import sims.dynamics.joints.{DistanceJoint, SpringJoint}
 import sims.geometry.Vector2D
 
 /** A running world's step allocates (nearly) nothing: the checks it makes of every joint before
   * every step, and the broadphase's check of its settings, build no message, closure or boxed
-  * number unless they fail.
+  * number unless they fail, and a spring's force is computed without vectors.
   */
 class StepAllocationSpec extends AnyFunSuite with Matchers:
   private val threads = ManagementFactory.getThreadMXBean.asInstanceOf[com.sun.management.ThreadMXBean]
@@ -30,6 +30,24 @@ class StepAllocationSpec extends AnyFunSuite with Matchers:
       last = ball
     world
 
+  /** `links` balls hanging from a fixed ball on damped springs, bouncing. */
+  private def springs(solver: Solver, links: Int): World =
+    val world = World()
+    world.solver = solver
+    val pivot = Circle(0.1, 1).asBody
+    pivot.fixed = true
+    world += pivot
+    var last = pivot
+    for i <- 1 to links do
+      val ball = Circle(0.1, 1).asBody
+      ball.pos = Vector2D(0.05 * i, -0.25 * i)
+      world += ball
+      val spring = SpringJoint(last, last.pos, ball, ball.pos, 20.0, 0.2)
+      spring.damping = 0.01
+      world += spring
+      last = ball
+    world
+
   private def bytesPerStep(world: World, steps: Int): Double =
     for _ <- 1 to 2000 do world.step() // let the JIT compile the step
     val before = threads.getCurrentThreadAllocatedBytes
@@ -42,4 +60,9 @@ class StepAllocationSpec extends AnyFunSuite with Matchers:
 
   test("the soft step of a 100-link chain allocates under 100 bytes a step") {
     bytesPerStep(chain(SoftStep(), 100), 1000) should be < 100.0
+  }
+
+  test("springs allocate nothing when they pull, under either step") {
+    bytesPerStep(springs(ClassicStep, 20), 1000) should be < 100.0
+    bytesPerStep(springs(SoftStep(), 20), 1000) should be < 100.0
   }

@@ -60,11 +60,28 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
     spring + v.project(x) * _damping
 
   def applyForce(): Unit =
-    val f = force
-    val r1 = a1.arm
-    val r2 = a2.arm
-    node1.forceAt(f.x, f.y, r1.x, r1.y)
-    node2.forceAt(-f.x, -f.y, r2.x, r2.y)
+    a1.update()
+    a2.update()
+    val dx = a2.x - a1.x
+    val dy = a2.y - a1.y
+    val squared = dx * dx + dy * dy
+    if !Vector2D.safeSquare(squared) then
+      // Ends together, or a length whose square over- or underflows: `force`'s general rules.
+      val f = force
+      node1.forceAt(f.x, f.y, a1.armX, a1.armY)
+      node2.forceAt(-f.x, -f.y, a2.armX, a2.armY)
+    else
+      // `force` in scalars, operation for operation (the same bits, no vectors allocated: the
+      // soft step calls this on every substep).
+      val length = math.sqrt(squared)
+      val stretch = springConstant * (length - initialLength)
+      val relativeX = (node2.vx - node2.w * (a2.y - node2.y)) - (node1.vx - node1.w * (a1.y - node1.y))
+      val relativeY = (node2.vy + node2.w * (a2.x - node2.x)) - (node1.vy + node1.w * (a1.x - node1.x))
+      val along = (relativeX * dx + relativeY * dy) / squared
+      val fx = dx / length * stretch + dx * along * _damping
+      val fy = dy / length * stretch + dy * along * _damping
+      node1.forceAt(fx, fy, a1.armX, a1.armY)
+      node2.forceAt(-fx, -fy, a2.armX, a2.armY)
 
   /** The stability number of this spring integrated explicitly over steps of `h` seconds:
     * (k h^2 + 2 c h) / m, with 1/m = 1/m1 + 1/m2 + r1^2/I1 + r2^2/I2 (r the anchors' arms; an
