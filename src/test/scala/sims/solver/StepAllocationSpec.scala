@@ -3,8 +3,8 @@ package sims.solver
 import java.lang.management.ManagementFactory
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
-import sims.dynamics.{Circle, World}
-import sims.dynamics.joints.{DistanceJoint, SpringJoint}
+import sims.dynamics.{Body, Circle, World}
+import sims.dynamics.joints.{DistanceJoint, Joint, SpringJoint}
 import sims.geometry.Vector2D
 
 /** A running world's step allocates (nearly) nothing: the checks it makes of every joint before
@@ -14,8 +14,10 @@ import sims.geometry.Vector2D
 class StepAllocationSpec extends AnyFunSuite with Matchers:
   private val threads = ManagementFactory.getThreadMXBean.asInstanceOf[com.sun.management.ThreadMXBean]
 
-  /** A chain of `links` balls on distance joints, hanging at rest from a fixed ball. */
-  private def chain(solver: Solver, links: Int): World =
+  /** `links` balls hanging from a fixed ball, each `offset` below the last, each hung on the one
+    * above by `link`.
+    */
+  private def hanging(solver: Solver, links: Int, offset: Vector2D)(link: (Body, Body) => Joint): World =
     val world = World()
     world.solver = solver
     val pivot = Circle(0.1, 1).asBody
@@ -24,29 +26,23 @@ class StepAllocationSpec extends AnyFunSuite with Matchers:
     var last = pivot
     for i <- 1 to links do
       val ball = Circle(0.1, 1).asBody
-      ball.pos = Vector2D(0, -0.25 * i)
+      ball.pos = offset * i
       world += ball
-      world += DistanceJoint(last, last.pos, ball, ball.pos)
+      world += link(last, ball)
       last = ball
     world
 
-  /** `links` balls hanging from a fixed ball on damped springs, bouncing. */
+  /** A chain of `links` balls on distance joints, hanging at rest. */
+  private def chain(solver: Solver, links: Int): World =
+    hanging(solver, links, Vector2D(0, -0.25))((a, b) => DistanceJoint(a, a.pos, b, b.pos))
+
+  /** `links` balls on damped springs, bouncing. */
   private def springs(solver: Solver, links: Int): World =
-    val world = World()
-    world.solver = solver
-    val pivot = Circle(0.1, 1).asBody
-    pivot.fixed = true
-    world += pivot
-    var last = pivot
-    for i <- 1 to links do
-      val ball = Circle(0.1, 1).asBody
-      ball.pos = Vector2D(0.05 * i, -0.25 * i)
-      world += ball
-      val spring = SpringJoint(last, last.pos, ball, ball.pos, 20.0, 0.2)
+    hanging(solver, links, Vector2D(0.05, -0.25)) { (a, b) =>
+      val spring = SpringJoint(a, a.pos, b, b.pos, 20.0, 0.2)
       spring.damping = 0.01
-      world += spring
-      last = ball
-    world
+      spring
+    }
 
   private def bytesPerStep(world: World, steps: Int): Double =
     for _ <- 1 to 2000 do world.step() // let the JIT compile the step

@@ -52,36 +52,43 @@ final class SpringJoint(val node1: Body, anchor1: Vector2D, val node2: Body, anc
 
   /** Force on node1 (node2 gets its opposite): spring plus damping. */
   def force: Vector2D =
-    val c1 = connection1
-    val c2 = connection2
-    val x = c2 - c1
-    val spring = if x.isNull then Vector2D.Null else x.unit * (springConstant * (x.length - initialLength))
-    val v = node2.velocityOfPoint(c2) - node1.velocityOfPoint(c1)
-    spring + v.project(x) * _damping
+    measureForce()
+    Vector2D(forceX, forceY)
 
   def applyForce(): Unit =
+    measureForce()
+    node1.forceAt(forceX, forceY, a1.armX, a1.armY)
+    node2.forceAt(-forceX, -forceY, a2.armX, a2.armY)
+
+  // The force on node1, set by `measureForce`.
+  private var forceX, forceY = 0.0
+
+  /** Sets (forceX, forceY) to the force on node1 at the current placements and velocities: with
+    * x = c2 - c1 from the anchor on node1 to that on node2 and v the velocity of c2 relative to
+    * c1, k (|x| - L) x / |x| + c (v . x / x . x) x. In scalars, allocating nothing (the soft step
+    * asks on every substep), except where |x|^2 is 0 or over- or underflows: there `Vector2D`'s
+    * rules for the null vector, `unit`, `length` and `project` decide, on the same operations.
+    */
+  private def measureForce(): Unit =
     a1.update()
     a2.update()
     val dx = a2.x - a1.x
     val dy = a2.y - a1.y
     val squared = dx * dx + dy * dy
-    if !Vector2D.safeSquare(squared) then
-      // Ends together, or a length whose square over- or underflows: `force`'s general rules.
-      val f = force
-      node1.forceAt(f.x, f.y, a1.armX, a1.armY)
-      node2.forceAt(-f.x, -f.y, a2.armX, a2.armY)
-    else
-      // `force` in scalars, operation for operation (the same bits, no vectors allocated: the
-      // soft step calls this on every substep).
+    val relativeX = (node2.vx - node2.w * (a2.y - node2.y)) - (node1.vx - node1.w * (a1.y - node1.y))
+    val relativeY = (node2.vy + node2.w * (a2.x - node2.x)) - (node1.vy + node1.w * (a1.x - node1.x))
+    if Vector2D.safeSquare(squared) then
       val length = math.sqrt(squared)
       val stretch = springConstant * (length - initialLength)
-      val relativeX = (node2.vx - node2.w * (a2.y - node2.y)) - (node1.vx - node1.w * (a1.y - node1.y))
-      val relativeY = (node2.vy + node2.w * (a2.x - node2.x)) - (node1.vy + node1.w * (a1.x - node1.x))
       val along = (relativeX * dx + relativeY * dy) / squared
-      val fx = dx / length * stretch + dx * along * _damping
-      val fy = dy / length * stretch + dy * along * _damping
-      node1.forceAt(fx, fy, a1.armX, a1.armY)
-      node2.forceAt(-fx, -fy, a2.armX, a2.armY)
+      forceX = dx / length * stretch + dx * along * _damping
+      forceY = dy / length * stretch + dy * along * _damping
+    else
+      val x = Vector2D(dx, dy)
+      val spring = if x.isNull then Vector2D.Null else x.unit * (springConstant * (x.length - initialLength))
+      val f = spring + Vector2D(relativeX, relativeY).project(x) * _damping
+      forceX = f.x
+      forceY = f.y
 
   /** The stability number of this spring integrated explicitly over steps of `h` seconds:
     * (k h^2 + 2 c h) / m, with 1/m = 1/m1 + 1/m2 + r1^2/I1 + r2^2/I2 (r the anchors' arms; an
