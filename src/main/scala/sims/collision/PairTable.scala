@@ -8,14 +8,17 @@ import sims.dynamics.Shape
   * touching a pair costs one probe; pairs leave by tombstone, so a scan over the slots may
   * remove what it visits. Slot order depends on the keys and on the order of changes only: what
   * the tracker reports from a scan it sorts by key, so nothing depends on it.
+  *
+  * A table made with `keepsShapes = false` holds keys and stamps only (the contact table's index,
+  * rebuilt every step, which needs no shapes and should not clear arrays of them).
   */
-private[sims] final class PairTable:
+private[sims] final class PairTable(keepsShapes: Boolean = true):
   import PairTable.*
 
   // Slot s: cells(2 s) = its key (or Empty, Removed), cells(2 s + 1) = its stamp.
   private var cells = emptyCells(64)
-  private var firsts = new Array[Shape](64)
-  private var seconds = new Array[Shape](64)
+  private var firsts = shapeSlots(64)
+  private var seconds = shapeSlots(64)
   // The arrays of the last rehash at this size, for the next: clearing out removed slots, as a
   // table whose pairs come and go must do every few steps, allocates nothing.
   private var spareCells = Array.emptyLongArray
@@ -23,6 +26,12 @@ private[sims] final class PairTable:
   private var mask = 63
   private var live = 0
   private var removed = 0
+  // The slots filled since the last clear or rehash, so that `clear` empties those alone (a table
+  // rebuilt every step has most of its slots empty). At most half the slots are in use, so the
+  // log overflows only where removed slots are filled again; `filled` then exceeds its length and
+  // `clear` empties every slot.
+  private var filledSlots = new Array[Int](32)
+  private var filled = 0
 
   /** Number of pairs. */
   def size: Int = live
@@ -39,11 +48,11 @@ private[sims] final class PairTable:
   /** Sets the stamp of the pair in `slot`. */
   def stamp(slot: Int, value: Long): Unit = cells(2 * slot + 1) = value
 
-  /** The first shape of the pair in `slot`. */
-  def firstAt(slot: Int): Shape = firsts(slot)
+  /** The first shape of the pair in `slot` (null in a table that keeps no shapes). */
+  def firstAt(slot: Int): Shape = if keepsShapes then firsts(slot) else null
 
-  /** The second shape of the pair in `slot`. */
-  def secondAt(slot: Int): Shape = seconds(slot)
+  /** The second shape of the pair in `slot` (null in a table that keeps no shapes). */
+  def secondAt(slot: Int): Shape = if keepsShapes then seconds(slot) else null
 
   /** The slot of `key`, or -1. */
   def find(key: Long): Int =
@@ -59,50 +68,94 @@ private[sims] final class PairTable:
     if 2 * (live + removed + 1) > slots then rehash(if 4 * (live + 1) > slots then 2 * slots else slots)
     place(key, first, second, stampValue)
 
+  /** Sets the stamp of `key`, adding the pair (with no shapes) if it is not in the table: one
+    * probe where `find` and then `insert` take two.
+    */
+  def put(key: Long, stampValue: Long): Unit =
+    var slot = hash(key) & mask
+    var reusable = -1 // the first removed slot on the way, where `place` would put the pair
+    var k = cells(2 * slot)
+    while k != Empty && k != key do
+      if k == Removed && reusable < 0 then reusable = slot
+      slot = (slot + 1) & mask
+      k = cells(2 * slot)
+    if k == key then cells(2 * slot + 1) = stampValue
+    else if 2 * (live + removed + 1) > slots then insert(key, null, null, stampValue)
+    else
+      if reusable >= 0 then
+        slot = reusable
+        removed -= 1
+      fill(slot, key, stampValue)
+
   private def place(key: Long, first: Shape, second: Shape, stampValue: Long): Unit =
     var slot = hash(key) & mask
     while cells(2 * slot) >= 0 do slot = (slot + 1) & mask // past live slots to an empty or removed one
     if cells(2 * slot) == Removed then removed -= 1
+    fill(slot, key, stampValue)
+    if keepsShapes then
+      firsts(slot) = first
+      seconds(slot) = second
+
+  private def fill(slot: Int, key: Long, stampValue: Long): Unit =
     cells(2 * slot) = key
     cells(2 * slot + 1) = stampValue
-    firsts(slot) = first
-    seconds(slot) = second
+    if filled < filledSlots.length then filledSlots(filled) = slot
+    filled += 1
     live += 1
 
   /** Takes the pair in `slot` out. */
   def remove(slot: Int): Unit =
     cells(2 * slot) = Removed
-    firsts(slot) = null
-    seconds(slot) = null
+    if keepsShapes then
+      firsts(slot) = null
+      seconds(slot) = null
     live -= 1
     removed += 1
 
   /** Takes every pair out. */
   def clear(): Unit =
-    java.util.Arrays.fill(cells, Empty)
-    java.util.Arrays.fill(firsts.asInstanceOf[Array[AnyRef]], null)
-    java.util.Arrays.fill(seconds.asInstanceOf[Array[AnyRef]], null)
+    if filled <= filledSlots.length then
+      var i = 0
+      while i < filled do
+        val slot = filledSlots(i)
+        cells(2 * slot) = Empty
+        if keepsShapes then
+          firsts(slot) = null
+          seconds(slot) = null
+        i += 1
+    else
+      java.util.Arrays.fill(cells, Empty)
+      if keepsShapes then
+        java.util.Arrays.fill(firsts.asInstanceOf[Array[AnyRef]], null)
+        java.util.Arrays.fill(seconds.asInstanceOf[Array[AnyRef]], null)
+    filled = 0
     live = 0
     removed = 0
+
+  private def shapeSlots(capacity: Int): Array[Shape] = if keepsShapes then new Array[Shape](capacity) else Array.empty
 
   /** Moves the pairs into arrays of `capacity` slots (the spare ones if they have that size),
     * leaving out the removed slots.
     */
   private def rehash(capacity: Int): Unit =
     val (oldCells, oldFirsts, oldSeconds) = (cells, firsts, seconds)
-    if spareFirsts.length == capacity then
+    if spareCells.length == 2 * capacity then
       cells = spareCells; firsts = spareFirsts; seconds = spareSeconds
       java.util.Arrays.fill(cells, Empty)
     else
       cells = emptyCells(capacity)
-      firsts = new Array[Shape](capacity)
-      seconds = new Array[Shape](capacity)
+      firsts = shapeSlots(capacity)
+      seconds = shapeSlots(capacity)
     mask = capacity - 1
+    if filledSlots.length != capacity / 2 then filledSlots = new Array[Int](capacity / 2)
+    filled = 0
     live = 0
     removed = 0
     var slot = 0
-    while slot < oldFirsts.length do
-      if oldCells(2 * slot) >= 0 then place(oldCells(2 * slot), oldFirsts(slot), oldSeconds(slot), oldCells(2 * slot + 1))
+    while 2 * slot < oldCells.length do
+      if oldCells(2 * slot) >= 0 then
+        if keepsShapes then place(oldCells(2 * slot), oldFirsts(slot), oldSeconds(slot), oldCells(2 * slot + 1))
+        else place(oldCells(2 * slot), null, null, oldCells(2 * slot + 1))
       slot += 1
     java.util.Arrays.fill(oldFirsts.asInstanceOf[Array[AnyRef]], null)
     java.util.Arrays.fill(oldSeconds.asInstanceOf[Array[AnyRef]], null)

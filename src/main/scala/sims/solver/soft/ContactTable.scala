@@ -20,7 +20,7 @@ private[sims] final class ContactTable:
   var committed: Contacts = Contacts()
   // The committed contacts by pair key (`PairKey`): the pair's slot holds its contact's index as
   // its stamp.
-  private val index = new PairTable
+  private val index = new PairTable(keepsShapes = false)
 
   /** Starts building this step's contacts. */
   def begin(): Unit = current.clear()
@@ -45,9 +45,7 @@ private[sims] final class ContactTable:
     var c = 0
     while c < committed.count do
       // A pair listed twice (a user's detector may) finds its last contact, as it always has.
-      val slot = index.find(committed.keys(c))
-      if slot >= 0 then index.stamp(slot, c)
-      else index.insert(committed.keys(c), committed.shapeA(c), committed.shapeB(c), c)
+      index.put(committed.keys(c), c)
       c += 1
 
   /** A copy of the committed generation (for a snapshot of the world). */
