@@ -201,7 +201,7 @@ private[sims] object ContactConstraints:
   def addFreeMotion(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, h: Double): Unit =
     val hot = contacts.hot
     var c = 0
-    while c < contacts.active do
+    while contacts.bouncing && c < contacts.active do
       val k = contacts.offset(c)
       if hot(k + Restitution) != 0 then
         var p = 0
@@ -270,7 +270,7 @@ private[sims] object ContactConstraints:
     val state = bodies.state
     var pass = 0
     var largest = Double.PositiveInfinity
-    while pass < iterations && largest > tolerance do
+    while contacts.bouncing && pass < iterations && largest > tolerance do
       largest = 0.0
       var c = 0
       while c < contacts.active do

@@ -471,7 +471,9 @@ private[sims] final class ContactFinder:
     contacts.hot(k + NormalX) = nx
     contacts.hot(k + NormalY) = ny
     contacts.hot(k + Friction) = a.friction * b.friction
-    contacts.hot(k + Restitution) = a.restitution * b.restitution
+    val restitution = a.restitution * b.restitution
+    contacts.hot(k + Restitution) = restitution
+    if restitution != 0 then contacts.bouncing = true
     contacts.hot(k + Stiffness) = stiffness
     c
 

@@ -121,6 +121,10 @@ private[sims] final class Contacts:
     * unchanged from the last step: pairs asleep).
     */
   var active: Int = 0
+  /** Whether a contact with restitution was added since the last `clear`: without one, the
+    * passes that only concern bouncing points have nothing to do.
+    */
+  var bouncing: Boolean = false
   var shapeA, shapeB: Array[Shape] = new Array[Shape](16)
   var bodyA, bodyB: Array[Int] = new Array[Int](16)
   var keys: Array[Long] = new Array[Long](16)
@@ -148,6 +152,7 @@ private[sims] final class Contacts:
   def clear(): Unit =
     count = 0
     active = 0
+    bouncing = false
     hotSize = 0
 
   /** Where point p of contact c starts in `hot`. */
@@ -162,6 +167,7 @@ private[sims] final class Contacts:
     c.grow(math.max(count, 16))
     c.count = count
     c.active = active
+    c.bouncing = bouncing
     c.hotSize = hotSize
     c.hot = java.util.Arrays.copyOf(hot, math.max(hotSize, 16))
     System.arraycopy(shapeA, 0, c.shapeA, 0, count); System.arraycopy(shapeB, 0, c.shapeB, 0, count)
