@@ -36,6 +36,10 @@ final class Body(initialShapes: Shape*):
   // Mass and inertia of the shapes (whether fixed or not), and the shapes' placements in the
   // body's frame: computed once from the shapes; read and put back by `sims.io` as they are.
   private[sims] var freeMass, freeI: Double = 0
+  // `mass` and `I` as they read, kept with the inverses (set by `updateInverseMass`, declared
+  // before the constructor's call of it): the classic joints divide by them in every position
+  // iteration, and a field costs less there than a test of two flags.
+  private var massNow, inertiaNow = 0.0
   private var _fixed = false
   private[sims] val offsetX, offsetY, relativeAngle = new Array[Double](shapes.length)
   // True when every shape sits on the centre of mass: moving needs no trigonometry then.
@@ -125,12 +129,15 @@ final class Body(initialShapes: Shape*):
     freeI = inertia
     updateInverseMass()
 
-  /** Sets 1 / mass and 1 / I from the shapes' mass and inertia and whether the body is fixed
-    * or kinematic.
+  /** Sets mass, I and their inverses from the shapes' mass and inertia and whether the body is
+    * fixed or kinematic.
     */
   private[sims] def updateInverseMass(): Unit =
-    invMass = if _fixed || _kinematic then 0 else 1 / freeMass
-    invI = if _fixed || _kinematic then 0 else 1 / freeI
+    val immovable = _fixed || _kinematic
+    invMass = if immovable then 0 else 1 / freeMass
+    invI = if immovable then 0 else 1 / freeI
+    massNow = if immovable then Double.PositiveInfinity else freeMass
+    inertiaNow = if immovable then Double.PositiveInfinity else freeI
 
   /** Places every shape from the body's centre and rotation. */
   private[sims] def placeShapes(): Unit =
@@ -334,12 +341,12 @@ final class Body(initialShapes: Shape*):
     touchedByUser()
 
   /** Mass in kg: the shapes' sum, or positive infinity when fixed or kinematic. */
-  def mass: Double = if _fixed || _kinematic then Double.PositiveInfinity else freeMass
+  def mass: Double = massNow
 
   /** Moment of inertia about the centre of mass (parallel-axis sum), or infinity when fixed or
     * kinematic.
     */
-  def I: Double = if _fixed || _kinematic then Double.PositiveInfinity else freeI
+  def I: Double = inertiaNow
 
   /** Whether the body is fixed (immovable by forces and impulses). */
   def fixed: Boolean = _fixed

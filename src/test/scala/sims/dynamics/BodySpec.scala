@@ -80,6 +80,21 @@ class BodySpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     b.contains(Vector2D(1, 1)) shouldBe false
   }
 
+  test("mass and I follow fixed and kinematic both ways") {
+    val b = Circle(0.5, 2).asBody
+    val (m, i) = (b.mass, b.I)
+    m shouldBe 2 * math.Pi * 0.25 +- 1e-12
+    for (fixed, kinematic) <- Seq((true, false), (false, false), (false, true), (true, false), (false, true), (false, false)) do
+      b.fixed = fixed
+      b.kinematic = kinematic
+      val immovable = fixed || kinematic
+      withClue(s"fixed $fixed, kinematic $kinematic: ") {
+        b.mass shouldBe (if immovable then Double.PositiveInfinity else m)
+        b.I shouldBe (if immovable then Double.PositiveInfinity else i)
+        b.invMass shouldBe (if immovable then 0.0 else 1 / m)
+      }
+  }
+
   test("a fixed body has infinite mass and ignores forces and impulses") {
     val b = Circle(1, 1).asBody
     b.linearVelocity = Vector2D(1, 1)
