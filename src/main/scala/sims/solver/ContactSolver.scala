@@ -86,7 +86,7 @@ private[sims] final class ContactSolver:
       val from = waves(k)
       sorted1(k) = body1(from)
       sorted2(k) = body2(from)
-      System.arraycopy(data, from * Stride, sortedData, k * Stride, Stride)
+      ShortCopy.doubles(data, from * Stride, sortedData, k * Stride, Stride)
       k += 1
     val b1 = body1; body1 = sorted1; sorted1 = b1
     val b2 = body2; body2 = sorted2; sorted2 = b2

@@ -1,5 +1,6 @@
 package sims.solver.soft
 
+import sims.solver.ShortCopy
 import sims.collision.{Collision, GridDetector, PairKey}
 import sims.collision.manifold.Manifold
 import sims.collision.narrowphase.PairKind
@@ -195,8 +196,8 @@ private[sims] final class ContactFinder:
     val k = old.offset(last)
     val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0)
     contacts.side(c) = old.side(last)
-    System.arraycopy(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
-    System.arraycopy(old.cold, last * ColdStride, contacts.cold, c * ColdStride, ColdStride)
+    ShortCopy.doubles(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
+    ShortCopy.doubles(old.cold, last * ColdStride, contacts.cold, c * ColdStride, ColdStride)
     contacts.ids(2 * c) = old.ids(2 * last)
     contacts.ids(2 * c + 1) = old.ids(2 * last + 1)
 
@@ -354,7 +355,7 @@ private[sims] final class ContactFinder:
     val hot = contacts.hot
     val cold = contacts.cold
     val oldCold = last * ColdStride
-    System.arraycopy(old.cold, oldCold, cold, c * ColdStride, ColdStride)
+    ShortCopy.doubles(old.cold, oldCold, cold, c * ColdStride, ColdStride)
     val ia = contacts.bodyA(c)
     val ib = contacts.bodyB(c)
     val turnA = bodies.startAngle(ia) - old.cold(oldCold + CachedAngleA)

@@ -40,6 +40,8 @@ object Main:
       world = (name: String, solver: String) =>
         val world = layoutScene(name).layout.world()
         world.solver = if solver == "SoftStep" then SoftStep() else ClassicStep
+        // The page measures the step's work, as the JVM bench does: no body falls asleep (the peers' sleeping is off too).
+        world.enableSleep = false
         val bodies = world.bodies.toIndexedSeq
         val joints = world.joints.toIndexedSeq.collect { case d: sims.dynamics.joints.DistanceJoint => d }
         js.Dynamic.literal(

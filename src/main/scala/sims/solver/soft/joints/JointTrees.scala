@@ -1,5 +1,6 @@
 package sims.solver.soft.joints
 
+import sims.solver.ShortCopy
 import scala.collection.mutable.ArrayBuffer
 import sims.solver.soft.{SmallMatrix, SoftBodies, SoftContext}
 import sims.solver.soft.SoftBodies.*
@@ -240,8 +241,8 @@ private[sims] final class JointTrees:
       t = 0
       while t < direct.length do
         direct(t).rowsAt(context, rows)
-        System.arraycopy(rows.jacobian1, 0, jacobian1, 6 * t, 6)
-        System.arraycopy(rows.jacobian2, 0, jacobian2, 6 * t, 6)
+        ShortCopy.doubles(rows.jacobian1, 0, jacobian1, 6 * t, 6)
+        ShortCopy.doubles(rows.jacobian2, 0, jacobian2, 6 * t, 6)
         positionError(2 * t) = rows.positionError(0)
         positionError(2 * t + 1) = rows.positionError(1)
         t += 1
@@ -309,7 +310,7 @@ private[sims] final class JointTrees:
         val parent = nodeParent(node)
         if parent >= 0 then
           val side = if body1(joint) == nodeRef(parent) then jacobian1 else jacobian2
-          System.arraycopy(side, 6 * joint, jacobian, o, 6)
+          ShortCopy.doubles(side, 6 * joint, jacobian, o, 6)
       else
         val b = nodeRef(node)
         val mass = 1 / bodies.invMass(b)
@@ -321,7 +322,7 @@ private[sims] final class JointTrees:
         if parent >= 0 then
           val joint = nodeRef(parent)
           val side = if body1(joint) == b then jacobian1 else jacobian2
-          System.arraycopy(side, 6 * joint, jacobian, o, 6)
+          ShortCopy.doubles(side, 6 * joint, jacobian, o, 6)
       node += 1
 
   /** Leaves first: each node's D is final once its children are eliminated; it is inverted and

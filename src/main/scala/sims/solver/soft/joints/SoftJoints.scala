@@ -1,5 +1,6 @@
 package sims.solver.soft.joints
 
+import sims.solver.ShortCopy
 import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.World
 import sims.dynamics.joints.{ForceJoint, Joint}
@@ -142,7 +143,7 @@ private[sims] final class SoftJoints:
     while i < knownCount do
       val c = knownConstraints(i)
       if c != null then
-        System.arraycopy(c.impulse, 0, startImpulses, total, c.impulse.length)
+        ShortCopy.doubles(c.impulse, 0, startImpulses, total, c.impulse.length)
         total += c.impulse.length
       i += 1
     startCount = knownCount
@@ -162,7 +163,7 @@ private[sims] final class SoftJoints:
     while i < startCount do
       val c = startList(i)
       if c != null then
-        System.arraycopy(startImpulses, total, c.impulse, 0, c.impulse.length)
+        ShortCopy.doubles(startImpulses, total, c.impulse, 0, c.impulse.length)
         total += c.impulse.length
       i += 1
 
