@@ -26,19 +26,11 @@ private[broadphase] final class CellGrid:
     used = 0
     entries = 0
 
-  /** First entry of the cell's chain, or -1 for an empty cell. */
-  def firstEntry(cx: Int, cy: Int): Int =
-    val slot = find(CellGrid.key(cx, cy))
-    if stamps(slot) == stamp then heads(slot) else -1
-
-  /** Next entry in the same chain, or -1. */
-  def nextEntry(entry: Int): Int = entryNext(entry)
-
-  /** The shape index stored in an entry. */
-  def shapeOf(entry: Int): Int = entryShape(entry)
-
-  /** Adds shape index `shape` to cell (cx, cy). */
-  def insert(cx: Int, cy: Int, shape: Int): Unit =
+  /** The slot of cell (cx, cy), claimed for it (with an empty chain) if the cell was empty:
+    * for `head` and `push`, until the next `open` or `reset`. One probe serves a cell's visit
+    * and the insertion after it.
+    */
+  def open(cx: Int, cy: Int): Int =
     if 2 * (used + 1) > keys.length then rehash()
     val key = CellGrid.key(cx, cy)
     val slot = find(key)
@@ -47,6 +39,19 @@ private[broadphase] final class CellGrid:
       keys(slot) = key
       heads(slot) = -1
       used += 1
+    slot
+
+  /** First entry of the chain of an `open` slot, or -1 for an empty cell. */
+  def head(slot: Int): Int = heads(slot)
+
+  /** Next entry in the same chain, or -1. */
+  def nextEntry(entry: Int): Int = entryNext(entry)
+
+  /** The shape index stored in an entry. */
+  def shapeOf(entry: Int): Int = entryShape(entry)
+
+  /** Adds shape index `shape` to the front of the chain of an `open` slot. */
+  def push(slot: Int, shape: Int): Unit =
     if entries == entryShape.length then
       entryShape = java.util.Arrays.copyOf(entryShape, entries * 2)
       entryNext = java.util.Arrays.copyOf(entryNext, entries * 2)
@@ -54,6 +59,14 @@ private[broadphase] final class CellGrid:
     entryNext(entries) = heads(slot)
     heads(slot) = entries
     entries += 1
+
+  /** First entry of the cell's chain, or -1 for an empty cell (the cell is not claimed). */
+  def firstEntry(cx: Int, cy: Int): Int =
+    val slot = find(CellGrid.key(cx, cy))
+    if stamps(slot) == stamp then heads(slot) else -1
+
+  /** Adds shape index `shape` to cell (cx, cy). */
+  def insert(cx: Int, cy: Int, shape: Int): Unit = push(open(cx, cy), shape)
 
   /** Slot of `key`, or the empty slot where it would go (linear probing). */
   private def find(key: Long): Int =

@@ -169,14 +169,15 @@ private[sims] final class UniformGrid extends Broadphase:
             var cyLong = y0.toLong
             while cyLong <= fineY1(i) do
               val cy = cyLong.toInt
-              var entry = grid.firstEntry(cx, cy)
+              val slot = grid.open(cx, cy)
+              var entry = grid.head(slot)
               while entry >= 0 do
                 val j = grid.shapeOf(entry)
                 // Each pair once: in the fine cell holding the corner of the bounds' overlap.
                 if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy && candidates(j, i) then
                   addToGroup(j, i)
                 entry = grid.nextEntry(entry)
-              grid.insert(cx, cy, i)
+              grid.push(slot, i)
               cyLong += 1
             cxLong += 1
           var k = 0
