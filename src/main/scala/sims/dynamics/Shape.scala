@@ -22,6 +22,10 @@ abstract class Shape:
   /** Mass: volume times density. */
   def mass: Double = volume * density
 
+  // The narrowphase picks a pair's methods by the shapes' classes, for every candidate pair of
+  // every step: read once here, because on Scala.js getClass is a type switch and a lookup.
+  private[sims] final val shapeClass: Class[?] = getClass
+
   // World frame placement; kept as plain doubles so the solver moves shapes without allocating.
   private[sims] var x: Double = 0
   private[sims] var y: Double = 0

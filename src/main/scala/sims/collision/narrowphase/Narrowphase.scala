@@ -102,8 +102,8 @@ private[sims] final class Narrowphase:
 
   /** The methods for the shapes' classes; fails if no detection method covers them. */
   def resolve(a: Shape, b: Shape): Resolved =
-    val c1 = a.getClass
-    val c2 = b.getClass
+    val c1 = a.shapeClass
+    val c2 = b.shapeClass
     var k = 0
     while k < RecentSize && !((recentClass1(k) eq c1) && (recentClass2(k) eq c2)) do k += 1
     if k < RecentSize then recent(k)
