@@ -127,32 +127,44 @@ function sanity(name, layout, engine) {
 
 function pause() { return new Promise((resolve) => setTimeout(resolve, 0)); }
 
+// Every engine of a scene is built and warmed up, then the engines take turns: each turn steps
+// each engine ChunkSteps steps (the order rotating from turn to turn), so that a change in the
+// machine's load between two engines' runs falls on all of them alike. An engine's time is the
+// median of its turns.
 async function run() {
   await RAPIER.init();
   const results = [];
   const status = document.getElementById("status");
   for (const name of simsBench.names) {
     const layout = simsBench.layout(name);
-    for (const [engineName, build] of Object.entries(engines)) {
-      status.textContent = `Running ${name} with ${engineName}…`;
-      await pause();
-      const engine = build(name);
+    const names = Object.keys(engines);
+    status.textContent = `Building ${name}…`;
+    await pause();
+    const built = names.map((engineName) => engines[engineName](name));
+    for (let e = 0; e < built.length; e++) {
+      status.textContent = `Warming up ${name} with ${names[e]}…`;
       for (let k = 0; k < WarmUpSteps; k += ChunkSteps) {
-        for (let c = 0; c < ChunkSteps; c++) engine.step();
+        for (let c = 0; c < ChunkSteps; c++) built[e].step();
         await pause();
       }
-      // Only the steps are timed, not the pauses between chunks.
-      let elapsed = 0;
-      for (let k = 0; k < TimedSteps; k += ChunkSteps) {
-        const start = performance.now();
-        for (let c = 0; c < ChunkSteps; c++) engine.step();
-        elapsed += performance.now() - start;
-        await pause();
-      }
-      const millis = elapsed / TimedSteps;
-      const [ok, detail] = sanity(name, layout, engine);
-      results.push({ scene: name, engine: engineName, millis, ok, detail });
     }
+    status.textContent = `Timing ${name}…`;
+    const turns = names.map(() => []);
+    for (let turn = 0; turn < TimedSteps / ChunkSteps; turn++) {
+      for (let i = 0; i < built.length; i++) {
+        const e = (i + turn) % built.length;
+        const start = performance.now();
+        for (let c = 0; c < ChunkSteps; c++) built[e].step();
+        turns[e].push((performance.now() - start) / ChunkSteps);
+        await pause();
+      }
+    }
+    names.forEach((engineName, e) => {
+      const sorted = [...turns[e]].sort((x, y) => x - y);
+      const millis = (sorted[(sorted.length - 1) >> 1] + sorted[sorted.length >> 1]) / 2;
+      const [ok, detail] = sanity(name, layout, built[e]);
+      results.push({ scene: name, engine: engineName, millis, ok, detail });
+    });
   }
   const table = document.getElementById("results");
   table.innerHTML = "<tr><th>scene</th><th>engine</th><th>ms/step</th><th>sanity</th></tr>" +

@@ -84,7 +84,9 @@ object BrowserBench:
        |page of `bench/browser` and writes this section): SiMS compiled with Scala.js (fullLinkJS),
        |and in the same page planck 1.5.0, matter-js 0.20.0 and Rapier (`@dimforge/rapier2d-compat`
        |0.21.0, Rust compiled to WebAssembly), each from npm, each building the scene from the same
-       |layout values. Every engine runs $warmUp steps before $timed timed steps; planck and
+       |layout values. Every engine runs $warmUp steps before $timed timed steps, the engines of a scene
+       |taking turns of 10 steps (the order rotating from turn to turn, so that a change in the
+       |machine's load falls on all of them alike) and each one's time the median of its turns; planck and
        |matter-js with 10 velocity and 10 position iterations as in the JVM bench, Rapier with its
        |defaults; sleeping off. The sanity check after the run is the JVM bench's (a pyramid stands,
        |a chain's joints hold their length within 25%, the balls stay in their pit); a result whose
