@@ -1,11 +1,11 @@
 package sims.solver.soft
 
-import sims.solver.ShortCopy
 import sims.collision.{Collision, GridDetector, PairKey}
 import sims.collision.manifold.Manifold
 import sims.collision.narrowphase.PairKind
 import sims.dynamics.{Circle, Shape, World}
 import sims.geometry.PortableMath
+import sims.solver.ShortCopy
 import sims.solver.soft.ContactTable.*
 import sims.solver.soft.SoftBodies.*
 

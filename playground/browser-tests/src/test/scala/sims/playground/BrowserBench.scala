@@ -56,10 +56,10 @@ object BrowserBench:
   private[playground] def markdown(rows: Seq[Row], warmUp: String, timed: String, agent: String): String =
     val engines = rows.map(_.engine).distinct
     val scenes = rows.map(_.scene).distinct
+    def row(scene: String, engine: String): Option[Row] = rows.find(r => r.scene == scene && r.engine == engine)
     def cell(scene: String, engine: String): String =
-      rows.find(r => r.scene == scene && r.engine == engine).fold("")(r =>
-        f"${r.millis}%.3f" + (if r.ok then "" else " (insane)"))
-    def millis(scene: String, engine: String): Option[Double] = rows.find(r => r.scene == scene && r.engine == engine).map(_.millis)
+      row(scene, engine).fold("")(r => f"${r.millis}%.3f" + (if r.ok then "" else " (insane)"))
+    def millis(scene: String, engine: String): Option[Double] = row(scene, engine).map(_.millis)
     // SoftStep is the solver to compare: the classic step fails the checks on most scenes.
     def ratio(scene: String, peer: String): Option[Double] =
       for soft <- millis(scene, Soft); other <- millis(scene, peer) yield soft / other
@@ -70,8 +70,7 @@ object BrowserBench:
       s"| scene | ${peers.map(p => s"$Soft / $p").mkString(" | ")} |\n|---|${peers.map(_ => "---:").mkString("|")}|\n" +
         scenes.map(s => s"| $s | ${peers.map(p => ratio(s, p).fold("")(r => f"$r%.2f")).mkString(" | ")} |").mkString("\n")
     // What the figures say of the aims: faster than the JavaScript engines, within 1.5 times Rapier's WebAssembly.
-    def scenesWhere(peer: String, bound: Double): Seq[String] = scenes.filter(s => ratio(s, peer).exists(_ > bound))
-    def aim(peer: String, bound: Double, wanted: String): String = scenesWhere(peer, bound) match
+    def aim(peer: String, bound: Double, wanted: String): String = scenes.filter(s => ratio(s, peer).exists(_ > bound)) match
       case Seq() => s"$wanted $peer on every scene"
       case missed => s"not $wanted $peer on ${missed.mkString(", ")}"
     val aims = Seq(("planck", 1.0, "faster than"), ("matter-js", 1.0, "faster than"), ("Rapier", 1.5, "within 1.5 times"))

@@ -1,7 +1,7 @@
 package sims.solver.soft.joints
 
-import sims.solver.ShortCopy
 import scala.collection.mutable.ArrayBuffer
+import sims.solver.ShortCopy
 import sims.solver.soft.{SmallMatrix, SoftBodies, SoftContext}
 import sims.solver.soft.SoftBodies.*
 

@@ -1,9 +1,9 @@
 package sims.solver.soft.joints
 
-import sims.solver.ShortCopy
 import scala.collection.mutable.ArrayBuffer
 import sims.dynamics.World
 import sims.dynamics.joints.{ForceJoint, Joint}
+import sims.solver.ShortCopy
 import sims.solver.soft.SoftBodies
 
 /** A world's joints as the soft step sees them: each joint's soft constraint (made the first
