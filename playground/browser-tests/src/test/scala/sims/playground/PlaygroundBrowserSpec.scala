@@ -31,7 +31,7 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
 
   override def afterAll(): Unit = chromium.foreach(_.close())
 
-  private def script(code: String, args: AnyRef*): AnyRef = chromium.get.driver.executeScript(code, args*)
+  private def script(code: String, args: AnyRef*): AnyRef = browser.driver.executeScript(code, args*)
 
   private def number(value: AnyRef): Double = value.asInstanceOf[Number].doubleValue
 

@@ -28,6 +28,9 @@ private[sims] abstract class JointConstraint(val joint: Joint, rows: Int):
   /** The constraint's rows at the current substep, for the direct solver. */
   def rowsAt(context: SoftContext, rows: JointRows): Unit = ()
 
+  /** Whether `solveAxial` solves anything this step (set by `prepare`). */
+  def solvesAxial: Boolean = false
+
   /** The part of the constraint the direct solver of joint trees does not solve (a joint's
     * limits, motor, spring), one pass of it; `solve` runs it too. Nothing by default.
     */

@@ -1,8 +1,7 @@
 package sims.solver.soft.joints
 
 import scala.collection.mutable.ArrayBuffer
-import sims.solver.ShortCopy
-import sims.solver.soft.{SmallMatrix, SoftBodies, SoftContext}
+import sims.solver.soft.{Contacts, SoftBodies, SoftContext}
 import sims.solver.soft.SoftBodies.*
 
 /** The soft step's direct solver for joints that form trees (a chain, a pendulum, a ragdoll):
@@ -32,31 +31,90 @@ private[sims] final class JointTrees:
   private val direct = ArrayBuffer.empty[JointConstraint]
   private val rows = JointRows()
   // Per direct joint t: its moving bodies (-1 when fixed), its bodies' indices (fixed ones
-  // too: a fixed body may move at a given velocity), rows, Jacobians (k x 3 each) and errors.
+  // too: a fixed body may move at a given velocity), rows, Jacobians (k x 3 for body 1 at
+  // 12 t, for body 2 at 12 t + 6, written by the joints' `rowsAt`) and errors (at 2 t).
   private var body1, body2, index1, index2, rowCount = new Array[Int](0)
-  private var jacobian1, jacobian2 = new Array[Double](0)
+  private var jacobians = new Array[Double](0)
   private var positionError = new Array[Double](0)
   // The elimination tree, nodes in breadth-first order from each root: kind (body or joint),
-  // the body index or joint number, size and parent node (-1 for a root).
+  // the body index or joint number, size, parent node (-1 for a root), and the offset in
+  // `jacobians` of the block between the node and its parent (k x 3: the joint's rows for the
+  // body).
   private var nodeCount = 0
   private var nodeIsJoint = new Array[Boolean](0)
-  private var nodeRef, nodeSize, nodeParent = new Array[Int](0)
-  // Per node, 3 x 3 blocks (row-major, stride 3): D, its inverse, and the Jacobian block
-  // between the node and its parent (k x 3: the joint's rows for the body).
-  private var d, dInverse, jacobian = new Array[Double](0)
-  private var z, x = new Array[Double](0)
-  // Scratch of one elimination.
-  private val y = new Array[Double](2)
-  private val g = new Array[Double](9)
+  private var nodeRef, nodeSize, nodeParent, nodeJacobian = new Array[Int](0)
+  // Per node (see `eliminate`): D, symmetric, its upper triangle at 6 node; the factor kept for
+  // the substitution (k x 3, at 6 node); the right side z, w = D^-1 z and the solution x, at 3 node.
+  private var d, factor = new Array[Double](0)
+  private var z, w, x = new Array[Double](0)
+  // The trees: tree k's nodes are treeStart(k) until treeStart(k + 1); whether something else
+  // acts on it this step (see `markTouched`).
+  private var treeCount = 0
+  private var treeStart = new Array[Int](1)
+  private var treeTouched = new Array[Boolean](0)
+  // The joints (and their bodies' indices, whether each moves, rows) the trees were laid out
+  // for: while they stay the same, so do the trees (see `sameLayout`).
+  private var laidOut = new Array[JointConstraint](0)
+  private var laidOutKey = new Array[Int](0)
+  private var laidOutCount = -1
+  // Bodies in a contact or an iterative joint this step: the stamp of the step that marked them.
+  private var bodyMark = new Array[Int](0)
+  private var markStamp = 0
   // Graph building.
   private var unionParent, bodyJoints, groundJoints, touched = new Array[Int](0)
+  // A breadth-first sweep over a tree's bodies (0 until n) and joints (n + t): queue, visit
+  // stamps, predecessors.
+  private var queue, visited, previous = new Array[Int](0)
+  private var visitStamp, visitedCount = 0
   private var bodyNode = new Array[Int](0)
   // Each body's incident direct joints: incident(start(b) until start(b + 1)).
   private var start, incident, filled = new Array[Int](0)
   private var jointSeen = new Array[Boolean](0)
 
-  /** Sorts this step's constraint joints into trees (solved here) and the rest. */
+  /** Sorts this step's constraint joints into trees (solved here) and the rest: kept from the
+    * last step when its joints, their bodies and which of those move are the same.
+    */
   def build(joints: ArrayBuffer[JointConstraint], bodies: SoftBodies): Unit =
+    if !sameLayout(joints, bodies) then
+      sortJoints(joints, bodies)
+      layOut(bodies)
+      remember(joints, bodies)
+
+  /** Whether the trees laid out last are this step's: the same joints in the same order, each
+    * between the same bodies, each of those moving or not as before, each with as many rows.
+    */
+  private def sameLayout(joints: ArrayBuffer[JointConstraint], bodies: SoftBodies): Boolean =
+    if joints.length != laidOutCount then false
+    else
+      var j = 0
+      while j < laidOutCount && (joints(j) eq laidOut(j)) && sameKey(j, joints(j), bodies) do j += 1
+      j == laidOutCount
+
+  private def sameKey(j: Int, constraint: JointConstraint, bodies: SoftBodies): Boolean =
+    val k = 5 * j
+    laidOutKey(k) == constraint.joint.node1.index && laidOutKey(k + 1) == constraint.joint.node2.index &&
+    laidOutKey(k + 2) == moving(constraint.joint.node1, bodies) &&
+    laidOutKey(k + 3) == moving(constraint.joint.node2, bodies) && laidOutKey(k + 4) == constraint.directRows
+
+  private def remember(joints: ArrayBuffer[JointConstraint], bodies: SoftBodies): Unit =
+    laidOutCount = joints.length
+    if laidOut.length < laidOutCount then
+      laidOut = new Array[JointConstraint](2 * laidOutCount)
+      laidOutKey = new Array[Int](10 * laidOutCount)
+    var j = 0
+    while j < laidOutCount do
+      val constraint = joints(j)
+      val k = 5 * j
+      laidOut(j) = constraint
+      laidOutKey(k) = constraint.joint.node1.index
+      laidOutKey(k + 1) = constraint.joint.node2.index
+      laidOutKey(k + 2) = moving(constraint.joint.node1, bodies)
+      laidOutKey(k + 3) = moving(constraint.joint.node2, bodies)
+      laidOutKey(k + 4) = constraint.directRows
+      j += 1
+    java.util.Arrays.fill(laidOut.asInstanceOf[Array[AnyRef]], laidOutCount, laidOut.length, null)
+
+  private def sortJoints(joints: ArrayBuffer[JointConstraint], bodies: SoftBodies): Unit =
     direct.clear()
     iterative.clear()
     val n = bodies.count
@@ -102,7 +160,6 @@ private[sims] final class JointTrees:
         direct += constraint
       else iterative += constraint
       j += 1
-    layOut(bodies)
 
   /** Leaves every joint to the iterative solver. */
   def keepIterative(joints: ArrayBuffer[JointConstraint]): Unit =
@@ -110,6 +167,8 @@ private[sims] final class JointTrees:
     iterative.clear()
     iterative ++= joints
     nodeCount = 0
+    treeCount = 0
+    laidOutCount = -1
 
   /** A body's index if it moves (has a finite mass), else -1. */
   private def moving(body: sims.dynamics.Body, bodies: SoftBodies): Int =
@@ -132,7 +191,7 @@ private[sims] final class JointTrees:
     if body1.length < joints then
       body1 = new Array[Int](2 * joints); body2 = new Array[Int](2 * joints); rowCount = new Array[Int](2 * joints)
       index1 = new Array[Int](2 * joints); index2 = new Array[Int](2 * joints)
-      jacobian1 = new Array[Double](12 * joints); jacobian2 = new Array[Double](12 * joints)
+      jacobians = new Array[Double](24 * joints)
       positionError = new Array[Double](4 * joints)
     var t = 0
     while t < joints do
@@ -165,26 +224,92 @@ private[sims] final class JointTrees:
     if nodeIsJoint.length < capacity then
       nodeIsJoint = new Array[Boolean](capacity)
       nodeRef = new Array[Int](capacity); nodeSize = new Array[Int](capacity); nodeParent = new Array[Int](capacity)
-      d = new Array[Double](9 * capacity); dInverse = new Array[Double](9 * capacity)
-      jacobian = new Array[Double](9 * capacity)
-      z = new Array[Double](3 * capacity); x = new Array[Double](3 * capacity)
+      nodeJacobian = new Array[Int](capacity)
+      d = new Array[Double](6 * capacity); factor = new Array[Double](6 * capacity)
+      z = new Array[Double](3 * capacity); w = new Array[Double](3 * capacity); x = new Array[Double](3 * capacity)
     java.util.Arrays.fill(bodyNode, 0, n, -1)
     if jointSeen.length < joints then jointSeen = new Array[Boolean](2 * joints)
     java.util.Arrays.fill(jointSeen, 0, joints, false)
+    if queue.length < capacity then
+      queue = new Array[Int](2 * capacity); visited = new Array[Int](2 * capacity); previous = new Array[Int](2 * capacity)
+      visitStamp = 0
     nodeCount = 0
-    // Trees held by a joint to the ground grow from that joint; free trees from their lowest body.
+    treeCount = 0
+    // Each tree from its root (see `rootOf`), the trees in the order of their first joint.
     t = 0
     while t < joints do
-      if (body1(t) < 0 || body2(t) < 0) && !jointSeen(t) then
-        jointSeen(t) = true
-        grow(addNode(isJoint = true, t, rowCount(t), -1))
+      if !jointSeen(t) then
+        if treeStart.length < treeCount + 2 then treeStart = java.util.Arrays.copyOf(treeStart, 2 * (treeCount + 2))
+        treeStart(treeCount) = nodeCount
+        val root = rootOf(n + t, n)
+        if root >= n then
+          jointSeen(root - n) = true
+          grow(addNode(isJoint = true, root - n, rowCount(root - n), -1))
+        else
+          bodyNode(root) = addNode(isJoint = false, root, 3, -1)
+          grow(nodeCount - 1)
+        treeCount += 1
       t += 1
-    i = 0
-    while i < n do
-      if start(i + 1) > start(i) && bodyNode(i) < 0 then
-        bodyNode(i) = addNode(isJoint = false, i, 3, -1)
-        grow(nodeCount - 1)
-      i += 1
+    treeStart(treeCount) = nodeCount
+    if treeTouched.length < treeCount then treeTouched = new Array[Boolean](2 * treeCount)
+
+  /** The root of the tree holding `element` (a body b < n or a joint n + t): its joint to the
+    * ground if it has one, else its centre, the middle of a longest path, found by two sweeps
+    * (the farthest element from any is an end of a longest path; the farthest from that end is
+    * the other). Eliminated from the leaves towards its centre, a tree's branches are
+    * independent chains of arithmetic of about half the tree's depth, which the processor
+    * overlaps. A joint to the ground must be the root: below its body it would be a pivot of its
+    * own with no body below it (0 in the relax pass), and the bodies it holds would give the
+    * joints above them singular pivots (a straight chain eliminated from its fixed end).
+    */
+  private def rootOf(element: Int, n: Int): Int =
+    val end = sweep(element, n)
+    var k = 0
+    var ground = -1
+    while ground < 0 && k < visitedCount do
+      val e = queue(k)
+      if e >= n && (body1(e - n) < 0 || body2(e - n) < 0) then ground = e
+      k += 1
+    if ground >= 0 then ground
+    else
+      var middle = sweep(end, n)
+      var length = 0
+      var e = middle
+      while e != end do { e = previous(e); length += 1 }
+      k = 0
+      while k < length / 2 do { middle = previous(middle); k += 1 }
+      middle
+
+  /** Visits the tree of `from` breadth first (bodies b < n, joints n + t), leaving each
+    * element's predecessor in `previous` and the elements visited in `queue(0 until
+    * visitedCount)`; returns the last element visited, one of the farthest.
+    */
+  private def sweep(from: Int, n: Int): Int =
+    visitStamp += 1
+    var head = 0
+    var tail = 1
+    queue(0) = from
+    visited(from) = visitStamp
+    while head < tail do
+      val e = queue(head)
+      head += 1
+      if e < n then
+        var k = start(e)
+        while k < start(e + 1) do
+          val next = n + incident(k)
+          if visited(next) != visitStamp then
+            visited(next) = visitStamp; previous(next) = e; queue(tail) = next; tail += 1
+          k += 1
+      else
+        val joint = e - n
+        var side = 0
+        while side < 2 do
+          val next = if side == 0 then body1(joint) else body2(joint)
+          if next >= 0 && visited(next) != visitStamp then
+            visited(next) = visitStamp; previous(next) = e; queue(tail) = next; tail += 1
+          side += 1
+    visitedCount = tail
+    queue(tail - 1)
 
   /** Adds the tree below `root`, breadth first: a body's children are its other joints, a
     * joint's its other moving body.
@@ -216,218 +341,295 @@ private[sims] final class JointTrees:
     nodeRef(node) = ref
     nodeSize(node) = size
     nodeParent(node) = parent
+    // The joint's rows for the body of the pair (node, parent): body 1's block or body 2's.
+    nodeJacobian(node) =
+      if parent < 0 then -1
+      else
+        val joint = if isJoint then ref else nodeRef(parent)
+        val body = if isJoint then nodeRef(parent) else ref
+        12 * joint + (if body1(joint) == body then 0 else 6)
     nodeCount += 1
     node
 
-  /** Applies the direct joints' accumulated impulses (the exact solve does not need them to
-    * converge, but the contacts solved before it in a pass see the joints' load).
+  /** Decides, for this step, which trees' joints apply their accumulated impulses in the warm
+    * start: those with a body in one of the first `active` contacts of `contacts` or in a joint
+    * solved iteratively, and those with a joint whose limits, motor or spring Gauss-Seidel solves
+    * ([[JointConstraint.solvesAxial]]). The others' warm start would change nothing: a tree's
+    * exact solve sets its rows' velocities whatever they were (an impulse J^T lambda along its
+    * own rows is undone by it exactly), and only what is solved before it in a pass sees the
+    * joints' load.
+    */
+  def markTouched(contacts: Contacts, bodies: SoftBodies): Unit =
+    if treeCount > 0 then
+      if bodyMark.length < bodies.count then bodyMark = new Array[Int](2 * bodies.count)
+      markStamp += 1
+      var c = 0
+      while c < contacts.active do
+        bodyMark(contacts.bodyA(c)) = markStamp
+        bodyMark(contacts.bodyB(c)) = markStamp
+        c += 1
+      var j = 0
+      while j < iterative.length do
+        mark(iterative(j).joint.node1.index)
+        mark(iterative(j).joint.node2.index)
+        j += 1
+      var tree = 0
+      while tree < treeCount do
+        var needed = false
+        var node = treeStart(tree)
+        while !needed && node < treeStart(tree + 1) do
+          needed =
+            if nodeIsJoint(node) then direct(nodeRef(node)).solvesAxial
+            else bodyMark(nodeRef(node)) == markStamp
+          node += 1
+        treeTouched(tree) = needed
+        tree += 1
+
+  private def mark(index: Int): Unit = if index >= 0 && index < bodyMark.length then bodyMark(index) = markStamp
+
+  /** Applies the accumulated impulses of the joints of the trees that need it (see
+    * `markTouched`); the others' start again from 0. (The solve pass's compliance reads the
+    * accumulated impulse as what the substep applied so far: with nothing applied, 0. Its exact
+    * solve then gives the same impulses and velocities as after a warm start.)
     */
   def warmStart(context: SoftContext): Unit =
-    var t = 0
-    while t < direct.length do
-      direct(t).warmStart(context)
-      t += 1
+    var tree = 0
+    while tree < treeCount do
+      val applied = treeTouched(tree)
+      var node = treeStart(tree)
+      while node < treeStart(tree + 1) do
+        if nodeIsJoint(node) then
+          val constraint = direct(nodeRef(node))
+          if applied then constraint.warmStart(context)
+          else
+            constraint.impulse(0) = 0
+            if nodeSize(node) == 2 then constraint.impulse(1) = 0
+        node += 1
+      tree += 1
 
-  /** One exact pass over every tree: with the bias C / h (`useBias`) or without. */
-  def solve(context: SoftContext, useBias: Boolean): Unit =
+  /** One pass over every tree: the rows the trees leave to Gauss-Seidel (limits, motors,
+    * springs), then the trees' own rows solved exactly, with the bias C / h (`useBias`) or
+    * without; when not `always`, only the trees that something else acts on (see
+    * `markTouched`): for the others the pass would change nothing that lasts (a relax pass
+    * before another substep's solve pass, which sets their rows' velocities whatever they were).
+    */
+  def solve(context: SoftContext, useBias: Boolean, always: Boolean): Unit =
     if direct.nonEmpty then
-      val state = context.bodies.state
-      // The rows the trees leave to Gauss-Seidel (limits, motors, springs) first, as a joint
-      // solved iteratively does before its own point constraint.
+      // The rows the trees leave to Gauss-Seidel first, as a joint solved iteratively does
+      // before its own point constraint.
       var t = 0
       while t < direct.length do
         direct(t).solveAxial(context, useBias)
         t += 1
-      t = 0
-      while t < direct.length do
-        direct(t).rowsAt(context, rows)
-        ShortCopy.doubles(rows.jacobian1, 0, jacobian1, 6 * t, 6)
-        ShortCopy.doubles(rows.jacobian2, 0, jacobian2, 6 * t, 6)
-        positionError(2 * t) = rows.positionError(0)
-        positionError(2 * t + 1) = rows.positionError(1)
-        t += 1
-      setUp(context, state, useBias)
-      eliminate()
-      substitute()
-      // Velocities change by dv; each joint's accumulated impulse by -y.
-      var node = 0
-      while node < nodeCount do
-        if nodeIsJoint(node) then
-          val accumulated = direct(nodeRef(node)).impulse
-          var r = 0
-          while r < nodeSize(node) do
-            accumulated(r) -= x(3 * node + r)
-            r += 1
-        else
-          val k = nodeRef(node) * SoftBodies.Stride
-          state(k + VelocityX) += x(3 * node); state(k + VelocityY) += x(3 * node + 1); state(k + AngularVelocity) += x(3 * node + 2)
-        node += 1
+      val state = context.bodies.state
+      var tree = 0
+      while tree < treeCount do
+        if always || treeTouched(tree) then
+          val from = treeStart(tree)
+          val until = treeStart(tree + 1)
+          var node = from
+          while node < until do
+            if nodeIsJoint(node) then
+              val joint = nodeRef(node)
+              rows.target(jacobians, 12 * joint, positionError, 2 * joint)
+              direct(joint).rowsAt(context, rows)
+            node += 1
+          setUp(context, state, useBias, from, until)
+          eliminate(from, until)
+          substitute(state, from, until)
+        tree += 1
 
-  /** The blocks of H, the right side, and each node's Jacobian block with its parent (k x 3,
-    * row-major: a joint's rows for that body), in `jacobian(node)`.
+  /** Each node's block of H and right side: a body's mass matrix and 0; a joint's -G (its
+    * compliance, in the solve pass) and -(Cdot + bias + G lambdaAcc).
     */
-  private def setUp(context: SoftContext, state: Array[Double], useBias: Boolean): Unit =
+  private def setUp(context: SoftContext, state: Array[Double], useBias: Boolean, from: Int, until: Int): Unit =
     val bodies = context.bodies
-    var node = 0
-    while node < nodeCount do
-      val o = 9 * node
+    // A compliance G = Compliance K in the solve pass, K the joint's own effective mass
+    // matrix (its two bodies alone): J dv + Cdot + C / h + G (acc + dLambda) = 0, so D = -G
+    // and G acc on the right; the relax pass is exact (G = 0, no bias). Exact with bias, a
+    // tree near a singular pose (a light body between two links pulled straight) has a
+    // near-singular Schur complement and turned an error of centimetres into a velocity
+    // of km/s, which a contact solved in the same pass handed to a ball as momentum
+    // (kinetic energy up 2.7-fold in zero gravity); with G a joint's response to its error
+    // stays within about 1 / Compliance times what its own bodies alone would give.
+    val compliance = if useBias then JointTrees.Compliance else 0.0
+    val inverseH = context.inverseH
+    var node = from
+    while node < until do
+      val o = 6 * node
+      val v = 3 * node
       if nodeIsJoint(node) then
         val joint = nodeRef(node)
-        val k = rowCount(joint)
-        // A compliance G = Compliance K in the solve pass, K the joint's own effective mass
-        // matrix (its two bodies alone): J dv + Cdot + C / h + G (acc + dLambda) = 0, so D = -G
-        // and G acc on the right; the relax pass is exact (G = 0, no bias). Exact with bias, a
-        // tree near a singular pose (a light body between two links pulled straight) has a
-        // near-singular Schur complement and turned an error of centimetres into a velocity
-        // of km/s, which a contact solved in the same pass handed to a ball as momentum
-        // (kinetic energy up 2.7-fold in zero gravity); with G a joint's response to its error
-        // stays within about 1 / Compliance times what its own bodies alone would give.
-        val compliance = if useBias then JointTrees.Compliance else 0.0
+        val j1 = 12 * joint
+        val j2 = j1 + 6
+        val s1 = index1(joint) * SoftBodies.Stride
+        val s2 = index2(joint) * SoftBodies.Stride
+        val m1 = bodies.invMass(index1(joint)); val i1 = bodies.invI(index1(joint))
+        val m2 = bodies.invMass(index2(joint)); val i2 = bodies.invI(index2(joint))
         val accumulated = direct(joint).impulse
-        var r = 0
-        while r < k do
-          var q = 0
-          while q < k do
-            d(o + 3 * r + q) =
-              if compliance == 0 then 0.0
-              else
-                -compliance *
-                  (rowCoupling(joint, r, q, index1(joint), jacobian1, bodies) +
-                    rowCoupling(joint, r, q, index2(joint), jacobian2, bodies))
-            q += 1
-          r += 1
-        r = 0
-        while r < k do
-          val cdot = rowVelocity(joint, r, state, index1(joint), jacobian1) + rowVelocity(joint, r, state, index2(joint), jacobian2)
-          val bias = if useBias then positionError(2 * joint + r) * context.inverseH else 0.0
-          var held = 0.0
-          var q = 0
-          while q < k do
-            held -= d(o + 3 * r + q) * accumulated(q)
-            q += 1
-          z(3 * node + r) = -(cdot + bias + held)
-          r += 1
-        val parent = nodeParent(node)
-        if parent >= 0 then
-          val side = if body1(joint) == nodeRef(parent) then jacobian1 else jacobian2
-          ShortCopy.doubles(side, 6 * joint, jacobian, o, 6)
+        val cdot0 = rowVelocity(j1, state, s1) + rowVelocity(j2, state, s2)
+        val bias0 = if useBias then positionError(2 * joint) * inverseH else 0.0
+        if nodeSize(node) == 1 then
+          val g00 = compliance * (coupling(j1, j1, m1, i1) + coupling(j2, j2, m2, i2))
+          d(o) = -g00
+          z(v) = -(cdot0 + bias0 + g00 * accumulated(0))
+        else
+          val cdot1 = rowVelocity(j1 + 3, state, s1) + rowVelocity(j2 + 3, state, s2)
+          val bias1 = if useBias then positionError(2 * joint + 1) * inverseH else 0.0
+          val g00 = compliance * (coupling(j1, j1, m1, i1) + coupling(j2, j2, m2, i2))
+          val g01 = compliance * (coupling(j1, j1 + 3, m1, i1) + coupling(j2, j2 + 3, m2, i2))
+          val g11 = compliance * (coupling(j1 + 3, j1 + 3, m1, i1) + coupling(j2 + 3, j2 + 3, m2, i2))
+          d(o) = -g00; d(o + 1) = -g01; d(o + 3) = -g11
+          z(v) = -(cdot0 + bias0 + g00 * accumulated(0) + g01 * accumulated(1))
+          z(v + 1) = -(cdot1 + bias1 + g01 * accumulated(0) + g11 * accumulated(1))
       else
         val b = nodeRef(node)
         val mass = 1 / bodies.invMass(b)
         d(o) = mass; d(o + 1) = 0; d(o + 2) = 0
-        d(o + 3) = 0; d(o + 4) = mass; d(o + 5) = 0
-        d(o + 6) = 0; d(o + 7) = 0; d(o + 8) = 1 / bodies.invI(b)
-        z(3 * node) = 0; z(3 * node + 1) = 0; z(3 * node + 2) = 0
-        val parent = nodeParent(node)
-        if parent >= 0 then
-          val joint = nodeRef(parent)
-          val side = if body1(joint) == b then jacobian1 else jacobian2
-          ShortCopy.doubles(side, 6 * joint, jacobian, o, 6)
+        d(o + 3) = mass; d(o + 4) = 0
+        d(o + 5) = 1 / bodies.invI(b)
+        z(v) = 0; z(v + 1) = 0; z(v + 2) = 0
       node += 1
 
   /** Leaves first: each node's D is final once its children are eliminated; it is inverted and
     * eliminated into its parent: D_p -= H_pc D_c^-1 H_cp and z_p -= H_pc D_c^-1 z_c, where H_pc
-    * is J^T (3 x k) for a joint below a body and J (k x 3) for a body below a joint.
+    * is J^T (3 x k) for a joint below a body and J (k x 3) for a body below a joint. Kept for
+    * the substitution: w_c = D_c^-1 z_c, and the factor D_c^-1 J (a joint) or J D_c^-1 (a body).
+    * Blocks are symmetric, stored as their upper triangle: (0, 0) (0, 1) (0, 2) (1, 1) (1, 2) (2, 2)
+    * at offsets 0 to 5 (a 2 x 2 block uses 0, 1 and 3). Every pivot is regular: a body's D is its
+    * mass matrix plus what its subtree adds (positive definite), a joint's -J D^-1 J^T of the
+    * bodies below it, which a joint to the ground only has as its tree's root.
     */
-  private def eliminate(): Unit =
-    var node = nodeCount - 1
-    while node >= 0 do
-      val o = 9 * node
+  private def eliminate(from: Int, until: Int): Unit =
+    var node = until - 1
+    while node >= from do
+      val o = 6 * node
+      val v = 3 * node
       val parent = nodeParent(node)
+      val jo = nodeJacobian(node)
       if nodeIsJoint(node) then
-        val k = nodeSize(node)
-        SmallMatrix.invert(d, o, k, dInverse, o)
-        if parent >= 0 then
-          val p = 9 * parent
-          // y = D^-1 z (k), G = D^-1 J (k x 3)
-          var r = 0
-          while r < k do
-            y(r) = dInverse(o + 3 * r) * z(3 * node) + (if k > 1 then dInverse(o + 3 * r + 1) * z(3 * node + 1) else 0.0)
-            var j = 0
-            while j < 3 do
-              g(3 * r + j) = dInverse(o + 3 * r) * jacobian(o + j) +
-                (if k > 1 then dInverse(o + 3 * r + 1) * jacobian(o + 3 + j) else 0.0)
-              j += 1
-            r += 1
-          // D_p -= J^T G, z_p -= J^T y
-          var i = 0
-          while i < 3 do
-            var j = 0
-            while j < 3 do
-              var sum = jacobian(o + i) * g(j)
-              if k > 1 then sum += jacobian(o + 3 + i) * g(3 + j)
-              d(p + 3 * i + j) -= sum
-              j += 1
-            var sum = jacobian(o + i) * y(0)
-            if k > 1 then sum += jacobian(o + 3 + i) * y(1)
-            z(3 * parent + i) -= sum
-            i += 1
+        if nodeSize(node) == 1 then
+          val a = d(o)
+          val inverse = if a != 0 then 1 / a else 0.0
+          val y = inverse * z(v)
+          w(v) = y
+          if parent >= 0 then
+            val p = 6 * parent
+            val pv = 3 * parent
+            val j0 = jacobians(jo); val j1 = jacobians(jo + 1); val j2 = jacobians(jo + 2)
+            val g0 = inverse * j0; val g1 = inverse * j1; val g2 = inverse * j2
+            factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
+            // D_p -= J^T G, z_p -= J^T y
+            d(p) -= j0 * g0; d(p + 1) -= j0 * g1; d(p + 2) -= j0 * g2
+            d(p + 3) -= j1 * g1; d(p + 4) -= j1 * g2; d(p + 5) -= j2 * g2
+            z(pv) -= j0 * y; z(pv + 1) -= j1 * y; z(pv + 2) -= j2 * y
+        else
+          val a = d(o); val b = d(o + 1); val c = d(o + 3)
+          var det = a * c - b * b
+          if det != 0 then det = 1 / det
+          val i00 = c * det; val i01 = -b * det; val i11 = a * det
+          val y0 = i00 * z(v) + i01 * z(v + 1)
+          val y1 = i01 * z(v) + i11 * z(v + 1)
+          w(v) = y0; w(v + 1) = y1
+          if parent >= 0 then
+            val p = 6 * parent
+            val pv = 3 * parent
+            val a0 = jacobians(jo); val a1 = jacobians(jo + 1); val a2 = jacobians(jo + 2)
+            val b0 = jacobians(jo + 3); val b1 = jacobians(jo + 4); val b2 = jacobians(jo + 5)
+            // G = D^-1 J, rows g and h
+            val g0 = i00 * a0 + i01 * b0; val g1 = i00 * a1 + i01 * b1; val g2 = i00 * a2 + i01 * b2
+            val h0 = i01 * a0 + i11 * b0; val h1 = i01 * a1 + i11 * b1; val h2 = i01 * a2 + i11 * b2
+            factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
+            factor(o + 3) = h0; factor(o + 4) = h1; factor(o + 5) = h2
+            d(p) -= a0 * g0 + b0 * h0; d(p + 1) -= a0 * g1 + b0 * h1; d(p + 2) -= a0 * g2 + b0 * h2
+            d(p + 3) -= a1 * g1 + b1 * h1; d(p + 4) -= a1 * g2 + b1 * h2; d(p + 5) -= a2 * g2 + b2 * h2
+            z(pv) -= a0 * y0 + b0 * y1; z(pv + 1) -= a1 * y0 + b1 * y1; z(pv + 2) -= a2 * y0 + b2 * y1
       else
-        SmallMatrix.invert(d, o, 3, dInverse, o)
+        // The symmetric 3 x 3 inverse by cofactors (a singular block gives 0).
+        val a = d(o); val b = d(o + 1); val c = d(o + 2); val e = d(o + 3); val f = d(o + 4); val i = d(o + 5)
+        val c00 = e * i - f * f; val c01 = c * f - b * i; val c02 = b * f - c * e
+        var det = a * c00 + b * c01 + c * c02
+        if det != 0 then det = 1 / det
+        val i00 = c00 * det; val i01 = c01 * det; val i02 = c02 * det
+        val i11 = (a * i - c * c) * det; val i12 = (b * c - a * f) * det; val i22 = (a * e - b * b) * det
+        val z0 = z(v); val z1 = z(v + 1); val z2 = z(v + 2)
+        w(v) = i00 * z0 + i01 * z1 + i02 * z2
+        w(v + 1) = i01 * z0 + i11 * z1 + i12 * z2
+        w(v + 2) = i02 * z0 + i12 * z1 + i22 * z2
         if parent >= 0 then
-          val p = 9 * parent
-          val k = nodeSize(parent)
+          val p = 6 * parent
+          val pv = 3 * parent
           // F = J D^-1 (k x 3); D_p -= F J^T, z_p -= F z
-          var r = 0
-          while r < k do
-            var j = 0
-            while j < 3 do
-              g(3 * r + j) = jacobian(o + 3 * r) * dInverse(o + j) + jacobian(o + 3 * r + 1) * dInverse(o + 3 + j) +
-                jacobian(o + 3 * r + 2) * dInverse(o + 6 + j)
-              j += 1
-            r += 1
-          r = 0
-          while r < k do
-            var q = 0
-            while q < k do
-              d(p + 3 * r + q) -= g(3 * r) * jacobian(o + 3 * q) + g(3 * r + 1) * jacobian(o + 3 * q + 1) +
-                g(3 * r + 2) * jacobian(o + 3 * q + 2)
-              q += 1
-            z(3 * parent + r) -= g(3 * r) * z(3 * node) + g(3 * r + 1) * z(3 * node + 1) + g(3 * r + 2) * z(3 * node + 2)
-            r += 1
+          val a0 = jacobians(jo); val a1 = jacobians(jo + 1); val a2 = jacobians(jo + 2)
+          val f0 = a0 * i00 + a1 * i01 + a2 * i02
+          val f1 = a0 * i01 + a1 * i11 + a2 * i12
+          val f2 = a0 * i02 + a1 * i12 + a2 * i22
+          factor(o) = f0; factor(o + 1) = f1; factor(o + 2) = f2
+          d(p) -= f0 * a0 + f1 * a1 + f2 * a2
+          z(pv) -= f0 * z0 + f1 * z1 + f2 * z2
+          if nodeSize(parent) == 2 then
+            val b0 = jacobians(jo + 3); val b1 = jacobians(jo + 4); val b2 = jacobians(jo + 5)
+            val h0 = b0 * i00 + b1 * i01 + b2 * i02
+            val h1 = b0 * i01 + b1 * i11 + b2 * i12
+            val h2 = b0 * i02 + b1 * i12 + b2 * i22
+            factor(o + 3) = h0; factor(o + 4) = h1; factor(o + 5) = h2
+            d(p + 1) -= f0 * b0 + f1 * b1 + f2 * b2
+            d(p + 3) -= h0 * b0 + h1 * b1 + h2 * b2
+            z(pv + 1) -= h0 * z0 + h1 * z1 + h2 * z2
       node -= 1
 
-  /** Roots first: x_c = D_c^-1 (z_c - H_cp x_p). */
-  private def substitute(): Unit =
-    var node = 0
-    while node < nodeCount do
-      val o = 9 * node
-      val n = nodeSize(node)
+  /** Roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the factor) x_p; then the velocities
+    * change by their bodies' x, each joint's accumulated impulse by -x.
+    */
+  private def substitute(state: Array[Double], from: Int, until: Int): Unit =
+    var node = from
+    while node < until do
+      val o = 6 * node
+      val v = 3 * node
       val parent = nodeParent(node)
-      if parent >= 0 then
-        val xp = 3 * parent
-        if nodeIsJoint(node) then
-          // z -= J x_p (k)
-          var r = 0
-          while r < n do
-            z(3 * node + r) -= jacobian(o + 3 * r) * x(xp) + jacobian(o + 3 * r + 1) * x(xp + 1) + jacobian(o + 3 * r + 2) * x(xp + 2)
-            r += 1
+      if nodeIsJoint(node) then
+        val accumulated = direct(nodeRef(node)).impulse
+        if parent < 0 then
+          x(v) = w(v)
+          if nodeSize(node) == 2 then x(v + 1) = w(v + 1)
         else
-          // z -= J^T x_p (3), J being the parent joint's k x 3 rows
-          val k = nodeSize(parent)
-          var i = 0
-          while i < 3 do
-            var sum = jacobian(o + i) * x(xp)
-            if k > 1 then sum += jacobian(o + 3 + i) * x(xp + 1)
-            z(3 * node + i) -= sum
-            i += 1
-      SmallMatrix.multiply(dInverse, o, n, z, 3 * node, x, 3 * node)
+          // x = w - G x_p
+          val pv = 3 * parent
+          val p0 = x(pv); val p1 = x(pv + 1); val p2 = x(pv + 2)
+          x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1 + factor(o + 2) * p2)
+          if nodeSize(node) == 2 then x(v + 1) = w(v + 1) - (factor(o + 3) * p0 + factor(o + 4) * p1 + factor(o + 5) * p2)
+        accumulated(0) -= x(v)
+        if nodeSize(node) == 2 then accumulated(1) -= x(v + 1)
+      else
+        if parent < 0 then
+          x(v) = w(v); x(v + 1) = w(v + 1); x(v + 2) = w(v + 2)
+        else
+          // x = w - F^T x_p
+          val pv = 3 * parent
+          val q0 = x(pv)
+          if nodeSize(parent) == 1 then
+            x(v) = w(v) - factor(o) * q0
+            x(v + 1) = w(v + 1) - factor(o + 1) * q0
+            x(v + 2) = w(v + 2) - factor(o + 2) * q0
+          else
+            val q1 = x(pv + 1)
+            x(v) = w(v) - factor(o) * q0 - factor(o + 3) * q1
+            x(v + 1) = w(v + 1) - factor(o + 1) * q0 - factor(o + 4) * q1
+            x(v + 2) = w(v + 2) - factor(o + 2) * q0 - factor(o + 5) * q1
+        val k = nodeRef(node) * SoftBodies.Stride
+        state(k + VelocityX) += x(v); state(k + VelocityY) += x(v + 1); state(k + AngularVelocity) += x(v + 2)
       node += 1
 
-  /** Rows r and q of the joint's Jacobian for one body through that body's inverse mass:
-    * its part of the joint's own effective mass matrix J M^-1 J^T.
+  /** Rows at r and q of a joint's Jacobian for one body through that body's inverse mass: its
+    * part of the joint's own effective mass matrix J M^-1 J^T.
     */
-  private def rowCoupling(joint: Int, r: Int, q: Int, body: Int, jacobian: Array[Double], bodies: SoftBodies): Double =
-    val a = 6 * joint + 3 * r
-    val b = 6 * joint + 3 * q
-    bodies.invMass(body) * (jacobian(a) * jacobian(b) + jacobian(a + 1) * jacobian(b + 1)) +
-      bodies.invI(body) * jacobian(a + 2) * jacobian(b + 2)
+  private def coupling(r: Int, q: Int, invMass: Double, invI: Double): Double =
+    invMass * (jacobians(r) * jacobians(q) + jacobians(r + 1) * jacobians(q + 1)) + invI * jacobians(r + 2) * jacobians(q + 2)
 
-  /** Row r of the joint's Jacobian for one body times that body's velocity. */
-  private def rowVelocity(joint: Int, r: Int, state: Array[Double], body: Int, jacobian: Array[Double]): Double =
-    val k = body * SoftBodies.Stride
-    val o = 6 * joint + 3 * r
-    jacobian(o) * state(k + VelocityX) + jacobian(o + 1) * state(k + VelocityY) + jacobian(o + 2) * state(k + AngularVelocity)
+  /** The Jacobian row at `row` times the velocity of the body whose state starts at `s`. */
+  private def rowVelocity(row: Int, state: Array[Double], s: Int): Double =
+    jacobians(row) * state(s + VelocityX) + jacobians(row + 1) * state(s + VelocityY) +
+      jacobians(row + 2) * state(s + AngularVelocity)
 
 private[sims] object JointTrees:
   /** The trees' compliance in the solve pass, relative to each joint's own effective mass: it

@@ -111,6 +111,8 @@ private[sims] final class PrismaticConstraint(prismatic: PrismaticJoint) extends
     state(s2 + VelocityY) += py * bodies.invMass(index2)
     state(s2 + AngularVelocity) += slide2 * lambda * bodies.invI(index2)
 
+  override def solvesAxial: Boolean = sliding
+
   override def solveAxial(context: SoftContext, useBias: Boolean): Unit =
     if sliding then
       val bodies = context.bodies

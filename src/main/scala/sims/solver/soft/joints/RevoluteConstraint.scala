@@ -47,6 +47,8 @@ private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends Jo
     solveAxial(context, useBias)
     pin.solve(context, useBias, impulse)
 
+  override def solvesAxial: Boolean = turning
+
   override def solveAxial(context: SoftContext, useBias: Boolean): Unit =
     if turning then
       val bodies = context.bodies

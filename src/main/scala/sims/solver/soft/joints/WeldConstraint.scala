@@ -38,6 +38,8 @@ private[sims] final class WeldConstraint(weld: WeldJoint) extends JointConstrain
     solveAxial(context, useBias)
     pin.solve(context, useBias, impulse, if weld.linearHertz > 0 then linearSoftness else null)
 
+  override def solvesAxial: Boolean = true
+
   override def solveAxial(context: SoftContext, useBias: Boolean): Unit =
     val bodies = context.bodies
     val state = bodies.state
