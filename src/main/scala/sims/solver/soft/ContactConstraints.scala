@@ -41,12 +41,15 @@ private[sims] object ContactConstraints:
     val hot = contacts.hot
     val cold = contacts.cold
     val state = bodies.state
+    contacts.ensureMasses()
+    val masses = contacts.masses
     var c = 0
     while c < contacts.active do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
       val mB = bodies.invMass(b); val iB = bodies.invI(b)
+      masses(4 * c) = mA; masses(4 * c + 1) = iA; masses(4 * c + 2) = mB; masses(4 * c + 3) = iB
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val tx = -ny; val ty = nx
@@ -76,23 +79,33 @@ private[sims] object ContactConstraints:
   /** Applies each point's accumulated impulses (from the last step, then from the substeps). */
   def warmStart(contacts: Contacts, bodies: SoftBodies): Unit =
     val hot = contacts.hot
+    val masses = contacts.masses
+    val state = bodies.state
     var c = 0
     while c < contacts.active do
-      val a = contacts.bodyA(c)
-      val b = contacts.bodyB(c)
+      val sA = contacts.bodyA(c) * SoftBodies.Stride
+      val sB = contacts.bodyB(c) * SoftBodies.Stride
+      val mA = masses(4 * c); val iA = masses(4 * c + 1)
+      val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
+      var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
+      var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+      val two = contacts.pointCount(c) == 2
+      var q = k + Header
       var p = 0
-      while p < contacts.pointCount(c) do
-        val q = k + Header + p * HotPoint
+      while p == 0 || (p == 1 && two) do
         val normal = hot(q + NormalImpulse)
         val tangent = hot(q + TangentImpulse)
         // n normal + t tangent, t = n.leftNormal = (-ny, nx)
         val px = nx * normal - ny * tangent
         val py = ny * normal + nx * tangent
-        bodies.applyImpulse(a, -px, -py, hot(q + AnchorAX), hot(q + AnchorAY))
-        bodies.applyImpulse(b, px, py, hot(q + AnchorBX), hot(q + AnchorBY))
+        vAx -= px * mA; vAy -= py * mA; wA -= (hot(q + AnchorAX) * py - hot(q + AnchorAY) * px) * iA
+        vBx += px * mB; vBy += py * mB; wB += (hot(q + AnchorBX) * py - hot(q + AnchorBY) * px) * iB
+        q += HotPoint
         p += 1
+      state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
+      state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       c += 1
 
   /** One pass over all contacts: normal impulses (with the soft bias when `useBias`, the
@@ -100,14 +113,15 @@ private[sims] object ContactConstraints:
     */
   def solve(contacts: Contacts, bodies: SoftBodies, inverseH: Double, contactSpeed: Double, useBias: Boolean): Unit =
     val hot = contacts.hot
+    val masses = contacts.masses
     val state = bodies.state
+    val bouncing = contacts.bouncing
     var c = 0
     while c < contacts.active do
-      val a = contacts.bodyA(c)
-      val b = contacts.bodyB(c)
-      val mA = bodies.invMass(a); val iA = bodies.invI(a)
-      val mB = bodies.invMass(b); val iB = bodies.invI(b)
-      val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
+      val sA = contacts.bodyA(c) * SoftBodies.Stride
+      val sB = contacts.bodyB(c) * SoftBodies.Stride
+      val mA = masses(4 * c); val iA = masses(4 * c + 1)
+      val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
       var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
       var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
       // B's displacement relative to A's since the step began: the points' current separation.
@@ -117,53 +131,49 @@ private[sims] object ContactConstraints:
       val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
-      val count = contacts.pointCount(c)
+      val two = contacts.pointCount(c) == 2
+      var q = k + Header
       var p = 0
-      while p < count do
-        val q = k + Header + p * HotPoint
+      while p == 0 || (p == 1 && two) do
         val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
         val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
         // current separation from the bodies' motion since the start of the step
         val dx = dpx + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
         val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
         val s = dx * nx + dy * ny + hot(q + BaseSeparation)
-        var bias = 0.0
-        var massScale = 1.0
-        var impulseScale = 0.0
-        if s > 0 then bias = s * inverseH // speculative: may close the gap, no more
-        else if useBias then
-          val push = hot(k + BiasRate) * s
-          if push >= -contactSpeed then
-            bias = push
-            massScale = hot(k + MassScale)
-            impulseScale = hot(k + ImpulseScale)
-          else
-            // Deeper than the push's cap: see DeepMassScale.
-            bias = -contactSpeed
-            massScale = DeepMassScale
-            impulseScale = 1 - DeepMassScale
         val dvx = vBx - wB * rBy - vAx + wA * rAy
         val dvy = vBy + wB * rBx - vAy - wA * rAx
         val vn = dvx * nx + dvy * ny
         val accumulated = hot(q + NormalImpulse)
-        var impulse = -hot(q + NormalMass) * massScale * (vn + bias) - impulseScale * accumulated
-        val total = math.max(accumulated + impulse, 0.0)
-        impulse = total - accumulated
+        val normalMass = hot(q + NormalMass)
+        val change =
+          if s > 0 then -normalMass * (vn + s * inverseH) // speculative: may close the gap, no more
+          else if useBias then
+            val push = hot(k + BiasRate) * s
+            if push >= -contactSpeed then
+              -normalMass * hot(k + MassScale) * (vn + push) - hot(k + ImpulseScale) * accumulated
+            else
+              // Deeper than the push's cap: see DeepMassScale.
+              -normalMass * DeepMassScale * (vn - contactSpeed) - (1 - DeepMassScale) * accumulated
+          else -normalMass * vn
+        val total = math.max(accumulated + change, 0.0)
+        val impulse = total - accumulated
         hot(q + NormalImpulse) = total
         // A substep applies its accumulated impulse in all (warm start, solve, relax): at the
         // end of its relax pass, this is what it applied.
         if !useBias then hot(q + TotalNormalImpulse) += total
-        // The first push's gap: positive when a solve pass pushed (the gap at the start of the
-        // substep it meets in), negative when a relax pass did (its gap after the substep's
-        // positions: it meets in the next substep), 0 when the bodies touched already. The test
-        // of s comes first: known before the impulse and false at resting points, it keeps the
-        // branch from waiting on the impulse's long chain of arithmetic.
-        val strongest = hot(q + MaxNormalImpulse)
-        if s > 0 && impulse > 0 && strongest == 0 then hot(q + ImpactGap) = if useBias then s else -s
-        if impulse > strongest then hot(q + MaxNormalImpulse) = impulse
+        // For restitution (a contact that bounces only): the largest push, and the first push's
+        // gap: positive when a solve pass pushed (the gap at the start of the substep it meets
+        // in), negative when a relax pass did (its gap after the substep's positions: it meets
+        // in the next substep), 0 when the bodies touched already.
+        if bouncing then
+          val strongest = hot(q + MaxNormalImpulse)
+          if s > 0 && impulse > 0 && strongest == 0 then hot(q + ImpactGap) = if useBias then s else -s
+          if impulse > strongest then hot(q + MaxNormalImpulse) = impulse
         val px = impulse * nx; val py = impulse * ny
         vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
         vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
+        q += HotPoint
         p += 1
       // Friction, in the relax pass only (as in Box2D v3; solving it in the solve pass too
       // measured no better on the stack, pyramid and ball-pit scenes), bounded by the normal
@@ -171,9 +181,9 @@ private[sims] object ContactConstraints:
       if !useBias then
         val tx = -ny; val ty = nx
         val friction = hot(k + Friction)
+        q = k + Header
         p = 0
-        while p < count do
-          val q = k + Header + p * HotPoint
+        while p == 0 || (p == 1 && two) do
           val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
           val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
           val dvx = vBx - wB * rBy - vAx + wA * rAy
@@ -187,6 +197,7 @@ private[sims] object ContactConstraints:
           val px = impulse * tx; val py = impulse * ty
           vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
           vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
+          q += HotPoint
           p += 1
       state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
       state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB

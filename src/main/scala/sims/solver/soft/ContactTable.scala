@@ -136,6 +136,15 @@ private[sims] final class Contacts:
   /** Doubles of `hot` in use. */
   var hotSize: Int = 0
   var cold: Array[Double] = new Array[Double](16 * ColdStride)
+  /** Per contact c, its bodies' inverse masses and inertias for the passes, (mA, iA, mB, iB) at
+    * 4 c: read in contact order, not gathered from the bodies' arrays in every pass. Set by the
+    * solver's preparation (not part of a contact's record: not copied, not saved).
+    */
+  var masses: Array[Double] = new Array[Double](0)
+
+  /** Makes `masses` hold the first `active` contacts. */
+  def ensureMasses(): Unit =
+    if masses.length < 4 * active then masses = new Array[Double](8 * active)
 
   /** Appends an empty contact of `points` points and returns its index. */
   def add(points: Int): Int =
