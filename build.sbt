@@ -48,6 +48,8 @@ lazy val root = (project in file("."))
     scmInfo := Release.scmInfo(baseDirectory.value),
     developers := List(Developer("sims-scala", "The SiMS for Scala contributors", "", homepage.value.orNull)),
     Compile / doc / scalacOptions ++= Seq("-doc-root-content", "docs/api-overview.md"),
+    // The JVM's side of the platform objects (the worker threads); Scala.js has its own in js/.
+    Compile / unmanagedSourceDirectories += baseDirectory.value / "src" / "main" / "scala-jvm",
     libraryDependencies ++= testDependencies,
     Test / parallelExecution := false,
     coverageMinimumStmtTotal := 90,
@@ -71,6 +73,7 @@ lazy val jvmOnlyTests = Set[String](
   "DependenciesSpec.scala", // read the library's sources from the disk
   "ManifoldSpec.scala", // counts allocated bytes with the JVM's ThreadMXBean
   "StepAllocationSpec.scala", // the same
+  "SoftStepWorkersSpec.scala", // counts the JVM's threads and what they allocate (Scala.js has one worker)
   "WorldCodecSpec.scala" // reads saved worlds from the class path's resources
 )
 
@@ -87,7 +90,9 @@ lazy val simsJS = (project in file("js"))
     homepage := (root / homepage).value,
     scmInfo := (root / scmInfo).value,
     developers := (root / developers).value,
-    Compile / unmanagedSourceDirectories := Seq((root / baseDirectory).value / "src" / "main" / "scala"),
+    // root's sources and the Scala.js side of the platform objects (one worker, no threads).
+    Compile / unmanagedSourceDirectories := Seq((root / baseDirectory).value / "src" / "main" / "scala",
+      baseDirectory.value / "src" / "main" / "scala"),
     Test / unmanagedSources ++= sharedTests((root / baseDirectory).value),
     Compile / doc / scalacOptions ++= Seq("-doc-root-content", ((root / baseDirectory).value / "docs" / "api-overview.md").toString),
     libraryDependencies ++= jsTestDependencies.value,

@@ -57,6 +57,9 @@ import sims.solver.soft.SoftBodies.*
   *   classic step uses with its detector's `gridSide`)
   * @param maxPairs the most candidate pairs a step may have; a step with more fails, changing
   *   nothing, with an IllegalStateException naming this limit
+  * @param workers how many threads share a step's contacts and bodies (the caller and
+  *   `workers - 1` others, kept in a pool; none is started for 1); the results are the same, to
+  *   the bit, for any number (default: the available processors; 1 on Scala.js)
   */
 final case class SoftStep(
     substeps: Int = Defaults.Substeps,
@@ -73,7 +76,8 @@ final case class SoftStep(
     contactLoadDepth: Double = Defaults.ContactLoadDepth,
     directJoints: Boolean = true,
     gridSide: Double = Defaults.GridSide,
-    maxPairs: Int = Defaults.MaxCandidatePairs) extends Solver:
+    maxPairs: Int = Defaults.MaxCandidatePairs,
+    workers: Int = Workers.available) extends Solver:
   if substeps < 1 then throw IllegalArgumentException(s"substeps must be at least 1, got $substeps")
   SoftStep.requirePositive("contactHertz", contactHertz)
   SoftStep.requireNonNegative("contactDampingRatio", contactDampingRatio)
@@ -88,6 +92,10 @@ final case class SoftStep(
   SoftStep.requireNonNegative("contactLoadDepth", contactLoadDepth)
   SoftStep.requirePositive("gridSide", gridSide)
   if maxPairs < 1 then throw IllegalArgumentException(s"maxPairs must be at least 1, got $maxPairs")
+  if workers < 1 then throw IllegalArgumentException(s"workers must be at least 1, got $workers")
+
+  // The worker set, made at the first step (a world that never steps starts no thread).
+  private lazy val pool: Workers = Workers(workers)
 
   def step(world: World): Unit =
     val workspace = world.workspace(classOf[SoftWorkspace], SoftWorkspace())
@@ -137,9 +145,13 @@ final case class SoftStep(
       bulletsOf(world).sweep(world)
       world.guard("continuous collision", Checked.Positions)
 
-  /** Every parameter by name, e.g. `SoftStep(substeps = 4, contactHertz = 30.0, ...)`. */
+  /** Every parameter by name, e.g. `SoftStep(substeps = 4, contactHertz = 30.0, ...)`; `workers`
+    * only when it is not the default (the machine's processors: it changes no result).
+    */
   override def toString: String =
-    productElementNames.zip(productIterator).map((name, value) => s"$name = $value").mkString("SoftStep(", ", ", ")")
+    productElementNames.zip(productIterator)
+      .filterNot((name, value) => name == "workers" && value == Workers.available)
+      .map((name, value) => s"$name = $value").mkString("SoftStep(", ", ", ")")
 
   /** The soft step reports the contacts that touch itself (see [[sims.solver.soft.ContactTouching]]). */
   override private[sims] def reportsTouching: Boolean = true
@@ -210,7 +222,7 @@ final case class SoftStep(
   private def prepare(workspace: SoftWorkspace, h: Double): Unit =
     val rate = 1 / h
     workspace.stiffness.set(contactHertz, 0.25 * rate, contactDampingRatio, staticContactFactor, contactLoadDepth, h)
-    ContactConstraints.prepare(workspace.table.current, workspace.bodies, workspace.stiffness)
+    workspace.passes.prepare(pool)
     val context = workspace.context
     context.bodies = workspace.bodies
     context.h = h
@@ -231,22 +243,7 @@ final case class SoftStep(
     if workspace.joints.forceJoints.nonEmpty then applyForceJoints(workspace)
     val gx = world.gravity.x
     val gy = world.gravity.y
-    val state = bodies.state
-    var i = 0
-    while i < bodies.count do
-      val m = bodies.invMass(i)
-      if m != 0 then
-        val k = i * SoftBodies.Stride
-        // Times the gravity scale, 1 unless the user set it: exact, the sums unchanged.
-        val scale = bodies.gravityScale(i)
-        state(k + VelocityX) += h * (gx * scale + bodies.substepForceX(i) * m)
-        state(k + VelocityY) += h * (gy * scale + bodies.substepForceY(i) * m)
-        state(k + AngularVelocity) += h * bodies.substepTorque(i) * bodies.invI(i)
-        if bodies.anyDamped then
-          state(k + VelocityX) *= bodies.linearDecay(i)
-          state(k + VelocityY) *= bodies.linearDecay(i)
-          state(k + AngularVelocity) *= bodies.angularDecay(i)
-      i += 1
+    workspace.passes.integrateVelocities(pool, gx, gy, h)
     ContactConstraints.addFreeMotion(workspace.table.current, bodies, gx, gy, h)
 
   /** The force joints' forces at the substep's placements and velocities, added to the user's. */
@@ -281,7 +278,7 @@ final case class SoftStep(
     while i < joints.length do
       joints(i).warmStart(workspace.context)
       i += 1
-    ContactConstraints.warmStart(workspace.table.current, workspace.bodies)
+    workspace.passes.warmStart(pool)
 
   /** One pass over the constraints, with the bias (solve) or without (relax): a soft
     * Gauss-Seidel sweep over the joints outside trees, then over the contacts, then the joint
@@ -299,41 +296,15 @@ final case class SoftStep(
     while i < joints.length do
       joints(i).solve(workspace.context, useBias)
       i += 1
-    ContactConstraints.solve(workspace.table.current, workspace.bodies, workspace.context.inverseH, contactSpeed, useBias)
+    workspace.passes.solve(pool, workspace.context.inverseH, contactSpeed, useBias)
     // The trees last: their exact solve leaves every joint of a tree exact at the end of the
     // pass, where a contact solved after it would pull a pin open (measured: a ragdoll landing
     // opened its pins by up to 13 mm with the trees first, 1.3 mm with them last).
     trees.solve(workspace.context, useBias, always = exactTrees)
 
-  /** dp += h v, dAngle += h w, and the turn's cosine and sine: turned by the angle h w itself
-    * (its cosine and sine by their series to the 4th and 5th power, then renormalised: no
-    * trigonometry per body and substep), so that the arms the substeps turn with them stay
-    * where the body's angle puts them after the step. (Turned by the complex number 1 + i h w,
-    * as Box2D does, a body turned by atan(h w) per substep, (h w)^3 / 3 less than its angle: at
-    * 30 rad/s, a joint's anchor 0.4 m out ended the step 1 mm from where its body put it.)
-    */
+  /** dp += h v, dAngle += h w, and the turns' cosines and sines (see [[SoftPasses]]). */
   private def integratePositions(workspace: SoftWorkspace, h: Double): Unit =
-    val bodies = workspace.bodies
-    val state = bodies.state
-    var i = 0
-    while i < bodies.count do
-      val k = i * SoftBodies.Stride
-      val vx = state(k + VelocityX); val vy = state(k + VelocityY); val w = state(k + AngularVelocity)
-      state(k + ShiftX) += h * vx
-      state(k + ShiftY) += h * vy
-      if w != 0 then
-        val turn = h * w
-        state(k + Turn) += turn
-        val turn2 = turn * turn
-        val cosTurn = 1 - turn2 * (0.5 - turn2 / 24)
-        val sinTurn = turn * (1 - turn2 * (1.0 / 6 - turn2 / 120))
-        val c = state(k + TurnCos); val s = state(k + TurnSin)
-        val turnedC = c * cosTurn - s * sinTurn
-        val turnedS = s * cosTurn + c * sinTurn
-        val length = math.sqrt(turnedC * turnedC + turnedS * turnedS)
-        state(k + TurnCos) = turnedC / length
-        state(k + TurnSin) = turnedS / length
-      i += 1
+    workspace.passes.integratePositions(pool, h)
 
   private def applyRestitution(world: World, workspace: SoftWorkspace, h: Double): Unit =
     ContactConstraints.restitution(workspace.table.current, workspace.bodies, restitutionThreshold,

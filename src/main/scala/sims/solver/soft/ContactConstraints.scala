@@ -32,19 +32,19 @@ private[sims] object ContactConstraints:
     */
   inline val DeepMassScale = 0.5
 
-  /** Computes what stays fixed during the step: effective masses, the normal relative
+  /** Computes, for contacts `from` until `until`, what stays fixed during the step: their
+    * bodies' inverse masses (in `contacts.masses`), effective masses, the normal relative
     * velocity before the step, and the softness (stiffer against fixed bodies, and stiffened
     * under a heavy load, see [[ContactStiffness]]). The arms and separations are the collision
     * stage's.
     */
-  def prepare(contacts: Contacts, bodies: SoftBodies, stiffness: ContactStiffness): Unit =
+  def prepare(contacts: Contacts, bodies: SoftBodies, stiffness: ContactStiffness, from: Int, until: Int): Unit =
     val hot = contacts.hot
     val cold = contacts.cold
     val state = bodies.state
-    contacts.ensureMasses()
     val masses = contacts.masses
-    var c = 0
-    while c < contacts.active do
+    var c = from
+    while c < until do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
@@ -76,33 +76,16 @@ private[sims] object ContactConstraints:
         p += 1
       stiffness.set(contacts, c, mA == 0 || mB == 0)
       c += 1
-    interleave(contacts)
 
-  /** The order of the passes: the contacts' two halves taken in turn (0, h, 1, h + 1, ...).
-    * The collision stage lists a shape's contacts one after another, each waiting in a pass for
-    * the one before to update their shared body's velocities; two contacts from the two halves
-    * rarely share a body, so the processor overlaps them (pyramid-20 and ballpit-2000 about 10%
-    * faster; the same stacks: pyramid-50 and large_pyramid drift as far after 10 s).
+  /** Applies the accumulated impulses (from the last step, then from the substeps) of the
+    * contacts `order(from until until)`.
     */
-  private def interleave(contacts: Contacts): Unit =
-    val active = contacts.active
-    val half = (active + 1) / 2
-    val order = contacts.order
-    var n = 0
-    while n < active do
-      order(n) = if (n & 1) == 0 then n >> 1 else half + (n >> 1)
-      n += 1
-
-  /** Applies each point's accumulated impulses (from the last step, then from the substeps), in
-    * the passes' order.
-    */
-  def warmStart(contacts: Contacts, bodies: SoftBodies): Unit =
+  def warmStart(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int): Unit =
     val hot = contacts.hot
     val masses = contacts.masses
     val state = bodies.state
-    val order = contacts.order
-    var n = 0
-    while n < contacts.active do
+    var n = from
+    while n < until do
       val c = order(n)
       val sA = contacts.bodyA(c) * SoftBodies.Stride
       val sB = contacts.bodyB(c) * SoftBodies.Stride
@@ -129,19 +112,18 @@ private[sims] object ContactConstraints:
       state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       n += 1
 
-  /** One pass over all contacts (in the order `interleave` set): normal impulses (with the soft
-    * bias when `useBias`, the solve pass; without, the relax pass), then, in the relax pass,
-    * friction.
+  /** One pass over the contacts `order(from until until)` (see [[ContactBlocks]]): normal
+    * impulses (with the soft bias when `useBias`, the solve pass; without, the relax pass), then,
+    * in the relax pass, friction.
     */
-  def solve(contacts: Contacts, bodies: SoftBodies, inverseH: Double, contactSpeed: Double, useBias: Boolean): Unit =
+  def solve(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int, inverseH: Double,
+      contactSpeed: Double, useBias: Boolean): Unit =
     val hot = contacts.hot
     val masses = contacts.masses
     val state = bodies.state
     val bouncing = contacts.bouncing
-    val active = contacts.active
-    val order = contacts.order
-    var n = 0
-    while n < active do
+    var n = from
+    while n < until do
       val c = order(n)
       val sA = contacts.bodyA(c) * SoftBodies.Stride
       val sB = contacts.bodyB(c) * SoftBodies.Stride

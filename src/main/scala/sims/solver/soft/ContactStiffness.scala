@@ -15,7 +15,6 @@ import sims.solver.soft.ContactTable.*
 private[sims] final class ContactStiffness:
   private val normal = Softness()
   private val static = Softness()
-  private val stiffened = Softness()
   private var h, zeta, omega, maximumOmega, staticFactor, loadDepth = 0.0
 
   /** Sets the step's stiffness: `hertz` (capped at `maximumHertz`), damping `zeta`, substep `h`. */
@@ -29,10 +28,17 @@ private[sims] final class ContactStiffness:
     normal.set(omega / (2 * math.Pi), zeta, h)
     static.set(staticFactor * omega / (2 * math.Pi), zeta, h)
 
-  /** Writes the softness of contact c (against a fixed body if `isStatic`) into its hot block. */
+  /** Writes the softness of contact c (against a fixed body if `isStatic`) into its hot block.
+    * Writes contact c's block alone (no scratch shared between contacts): contacts may be set
+    * from several threads at once.
+    */
   def set(contacts: Contacts, c: Int, isStatic: Boolean): Unit =
     val factor = if isStatic then staticFactor else 1.0
-    var soft = if isStatic then static else normal
+    val soft = if isStatic then static else normal
+    val k = contacts.offset(c)
+    contacts.hot(k + BiasRate) = soft.biasRate
+    contacts.hot(k + MassScale) = soft.massScale
+    contacts.hot(k + ImpulseScale) = soft.impulseScale
     if loadDepth > 0 then
       // The load as an acceleration of the effective mass: F / m = (impulse / h) / normalMass.
       val hot = contacts.hot
@@ -42,16 +48,9 @@ private[sims] final class ContactStiffness:
         val q = contacts.hotPoint(c, p)
         if hot(q + NormalMass) > 0 then load = math.max(load, hot(q + NormalImpulse) / (h * hot(q + NormalMass)))
         p += 1
-      val k = contacts.offset(c)
       // Never softer than the pair was: a stiffness that follows the load step by step pumps
       // energy into a loaded pile (a spring stiffer while compressed: parametric excitation).
       // Never beyond this step's limit either (the substeps or the pair's kind may have changed).
       val needed = math.min(math.max(math.sqrt(load / loadDepth), hot(k + Stiffness)), factor * maximumOmega)
       hot(k + Stiffness) = needed
-      if needed > factor * omega then
-        stiffened.set(needed / (2 * math.Pi), zeta, h)
-        soft = stiffened
-    val k = contacts.offset(c)
-    contacts.hot(k + BiasRate) = soft.biasRate
-    contacts.hot(k + MassScale) = soft.massScale
-    contacts.hot(k + ImpulseScale) = soft.impulseScale
+      if needed > factor * omega then Softness.write(needed / (2 * math.Pi), zeta, h, hot, k + BiasRate)

@@ -142,14 +142,9 @@ private[sims] final class Contacts:
     */
   var masses: Array[Double] = new Array[Double](0)
 
-  /** The order the solver's passes take the first `active` contacts in (set with `masses`). */
-  var order: Array[Int] = new Array[Int](0)
-
-  /** Makes `masses` and `order` hold the first `active` contacts. */
+  /** Makes `masses` hold the first `active` contacts. */
   def ensureMasses(): Unit =
-    if masses.length < 4 * active then
-      masses = new Array[Double](8 * active)
-      order = new Array[Int](2 * active)
+    if masses.length < 4 * active then masses = new Array[Double](8 * active)
 
   /** Appends an empty contact of `points` points and returns its index. */
   def add(points: Int): Int =

@@ -20,6 +20,8 @@ private[sims] final class SoftWorkspace extends sims.dynamics.CarriedState:
   val stiffness: ContactStiffness = ContactStiffness()
   /** The joints: their constraints, this step's force joints and joint trees. */
   val joints: SoftJoints = SoftJoints()
+  /** The stages the worker threads share. */
+  val passes: SoftPasses = SoftPasses(this)
   /** Sleeping: resting times and islands. */
   val islands: SleepIslands = SleepIslands()
   /** The world's `revision` at the end of the last step that collided its pairs, or -1: a step

@@ -20,15 +20,28 @@ private[sims] final class Softness:
 
   /** Sets the coefficients for stiffness `hertz`, damping ratio `zeta` and substep `h`. */
   def set(hertz: Double, zeta: Double, h: Double): Unit =
+    Softness.write(hertz, zeta, h, scratch, 0)
+    biasRate = scratch(0)
+    massScale = scratch(1)
+    impulseScale = scratch(2)
+
+  private val scratch = new Array[Double](3)
+
+/** The coefficients' formulas. */
+private[sims] object Softness:
+  /** Writes biasRate, massScale and impulseScale for stiffness `hertz`, damping ratio `zeta` and
+    * substep `h` to `into(at)`, `into(at + 1)` and `into(at + 2)`.
+    */
+  def write(hertz: Double, zeta: Double, h: Double, into: Array[Double], at: Int): Unit =
     if hertz == 0 then
-      biasRate = 0
-      massScale = 1
-      impulseScale = 0
+      into(at) = 0
+      into(at + 1) = 1
+      into(at + 2) = 0
     else
       val omega = 2 * math.Pi * hertz
       val a1 = 2 * zeta + h * omega
       val a2 = h * omega * a1
       val a3 = 1 / (1 + a2)
-      biasRate = omega / a1
-      massScale = a2 * a3
-      impulseScale = a3
+      into(at) = omega / a1
+      into(at + 1) = a2 * a3
+      into(at + 2) = a3

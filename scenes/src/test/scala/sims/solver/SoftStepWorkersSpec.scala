@@ -1,0 +1,63 @@
+package sims.solver
+
+import java.lang.management.ManagementFactory
+import org.scalatest.funsuite.AnyFunSuite
+import org.scalatest.matchers.should.Matchers
+import scala.jdk.CollectionConverters.*
+import sims.dynamics.World
+import sims.scenes.{BenchScenes, StateFingerprint}
+
+/** The soft step's workers: the same bits for any number of them, no thread for one, nothing
+  * allocated per step by a pool. (JVM only: it counts the JVM's threads and their allocation.)
+  */
+class SoftStepWorkersSpec extends AnyFunSuite with Matchers:
+  private val threads = ManagementFactory.getThreadMXBean.asInstanceOf[com.sun.management.ThreadMXBean]
+
+  /** The scene stepped `steps` times under `SoftStep(workers = workers)`, sleeping off. */
+  private def stepped(name: String, steps: Int, workers: Int): World =
+    val world = BenchScenes.find(name).get.build().world
+    world.enableSleep = false
+    world.solver = SoftStep(workers = workers)
+    for _ <- 1 to steps do world.step()
+    world
+
+  private def workerThreads: Seq[Thread] =
+    Thread.getAllStackTraces.keySet.asScala.toSeq.filter(_.getName.startsWith("sims-worker-"))
+
+  // Big enough that the contacts are cut into blocks and the bodies shared out in ranges (ball
+  // pit, pyramid, wall), with joints (the grid) and ragdolls that land (rain).
+  for (name, steps) <- Seq("ballpit-8000" -> 40, "large_pyramid-70" -> 40, "smash-60x40" -> 30,
+      "joint_grid-70" -> 20, "rain-1x12x5" -> 60) do
+    test(s"$name after $steps steps: the same bits under 1, 2, 3 and 4 workers") {
+      val fingerprints = (1 to 4).map(w => StateFingerprint(stepped(name, steps, w)))
+      fingerprints.distinct shouldBe fingerprints.take(1)
+    }
+
+  test("a world with one worker starts no thread; two workers, one thread for every such world") {
+    // Threads by identity: another class loader's copy of the library (another project's tests
+    // in this JVM) has pools of its own, with the same names.
+    val before = workerThreads.toSet
+    stepped("ballpit-8000", 5, 1)
+    workerThreads.toSet shouldBe before
+    stepped("ballpit-8000", 5, 2)
+    stepped("ballpit-8000", 5, 2)
+    val started = workerThreads.toSet -- before
+    started.size should be <= 1
+    started.map(_.getName).subsetOf(Set("sims-worker-1-of-2")) shouldBe true
+  }
+
+  test("a step with two workers allocates under 1 KB, the pool's thread included") {
+    // 1,000 steps: the JIT's compiled step, and the pile past the growth of its contact arrays.
+    val world = stepped("ballpit-4000", 1000, 2)
+    val ids = (Thread.currentThread +: workerThreads).map(_.getId)
+    def allocated = ids.map(threads.getThreadAllocatedBytes).sum
+    val before = allocated
+    for _ <- 1 to 200 do world.step()
+    (allocated - before) / 200.0 should be < 1024.0
+  }
+
+  test("workers must be at least 1, named in the error") {
+    val error = intercept[IllegalArgumentException](SoftStep(workers = 0))
+    error.getMessage should include("workers")
+    error.getMessage should include("0")
+  }

@@ -1,0 +1,166 @@
+package sims.solver.soft
+
+/** The order in which the soft step's passes take a step's contacts, as blocks that share no
+  * moving body, so that the blocks of one level may be solved at once, by several workers,
+  * with the same bits as one after the other.
+  *
+  * The moving bodies are cut into 2^Depth slabs of about equal numbers along the longer side of
+  * the box around them (by their places at the start of the step). A contact whose moving bodies
+  * lie in one slab (or that has one moving body) belongs to that slab's block, level 0. The
+  * slabs are the leaves of a binary tree; a contact between two slabs belongs to the block of
+  * their lowest common node, level 1 for neighbouring pairs of slabs up to level Depth at the
+  * root. Two blocks of one level hold bodies of disjoint sets of slabs: they share no moving
+  * body. The passes take the levels in turn, 0 first. Worlds with fewer than `MinimumSplit`
+  * contacts are one block. Which block a contact joins depends on the bodies' places alone,
+  * never on the number of workers.
+  *
+  * Within a block the contacts keep the collision stage's order, its two halves taken in turn
+  * (0, h, 1, h + 1, ...): the collision stage lists a shape's contacts one after another, each
+  * waiting in a pass for the one before to update their shared body's velocities, and two
+  * contacts from the two halves rarely share a body, so the processor overlaps them.
+  */
+private[sims] final class ContactBlocks:
+  import ContactBlocks.*
+
+  /** The passes' order: block k's contacts are `order(start(k) until start(k + 1))`. */
+  var order: Array[Int] = new Array[Int](0)
+  /** Where each block starts in `order` (blocks by level: the 2^Depth leaves, then level 1's...). */
+  val start: Array[Int] = new Array[Int](BlockCount + 1)
+  /** Number of levels this step: 1 (one block) or Depth + 1. */
+  var levels: Int = 1
+
+  // Per contact: its block; the contacts sorted by block. Per body: its slab (-1 when it does not
+  // move).
+  private var blockOf, sorted = new Array[Int](0)
+  private var slab = new Array[Int](0)
+  private val histogram = new Array[Int](Bins)
+  private val bySlab = new Array[Int](Bins)
+  private val filled = new Array[Int](BlockCount)
+
+  /** The first block of `level` (0 to `levels - 1`). */
+  def levelStart(level: Int): Int = if levels == 1 then 0 else BlockCount + 1 - (2 << (Depth - level))
+
+  /** The number of blocks of `level`. */
+  def levelSize(level: Int): Int = if levels == 1 then 1 else 1 << (Depth - level)
+
+  /** Cuts the first `active` contacts of `contacts` into blocks, between the `bodies`. */
+  def split(contacts: Contacts, bodies: SoftBodies): Unit =
+    val active = contacts.active
+    if order.length < active then
+      order = new Array[Int](2 * active)
+      blockOf = new Array[Int](2 * active)
+      sorted = new Array[Int](2 * active)
+    if active < MinimumSplit then
+      levels = 1
+      start(0) = 0
+      start(1) = active
+      interleave(0, active, identity = true)
+    else
+      levels = Depth + 1
+      cutSlabs(bodies)
+      var c = 0
+      while c < active do
+        val a = slab(contacts.bodyA(c))
+        val b = slab(contacts.bodyB(c))
+        blockOf(c) =
+          if a < 0 then math.max(b, 0)
+          else if b < 0 || a == b then a
+          else
+            // The lowest common node of leaves a and b: `level` bits up, at index a >> level.
+            val level = 32 - Integer.numberOfLeadingZeros(a ^ b)
+            levelStart(level) + (a >> level)
+        c += 1
+      // Counting sort by block, each block in the collision stage's order.
+      java.util.Arrays.fill(filled, 0)
+      c = 0
+      while c < active do { filled(blockOf(c)) += 1; c += 1 }
+      start(0) = 0
+      var k = 0
+      while k < BlockCount do { start(k + 1) = start(k) + filled(k); filled(k) = start(k); k += 1 }
+      c = 0
+      while c < active do
+        val k = blockOf(c)
+        sorted(filled(k)) = c
+        filled(k) += 1
+        c += 1
+      k = 0
+      while k < BlockCount do
+        interleave(start(k), start(k + 1), identity = false)
+        k += 1
+
+  /** Writes `order(from until until)`: the block's contacts (`sorted(from until until)`, or
+    * `from until until` themselves when `identity`), their two halves taken in turn.
+    */
+  private def interleave(from: Int, until: Int, identity: Boolean): Unit =
+    val half = (until - from + 1) / 2
+    var n = 0
+    while n < until - from do
+      val i = from + (if (n & 1) == 0 then n >> 1 else half + (n >> 1))
+      order(from + n) = if identity then i else sorted(i)
+      n += 1
+
+  /** Gives every moving body its slab: `Bins` bins along the longer side of the box around the
+    * moving bodies, each bin's bodies in one slab, the slabs cut where the running count passes
+    * each 1 / 2^Depth of the bodies.
+    */
+  private def cutSlabs(bodies: SoftBodies): Unit =
+    val n = bodies.count
+    if slab.length < n then slab = new Array[Int](2 * n)
+    var minX, minY = Double.PositiveInfinity
+    var maxX, maxY = Double.NegativeInfinity
+    var moving = 0
+    var i = 0
+    while i < n do
+      if bodies.invMass(i) != 0 then
+        val x = bodies.startX(i); val y = bodies.startY(i)
+        if x < minX then minX = x
+        if x > maxX then maxX = x
+        if y < minY then minY = y
+        if y > maxY then maxY = y
+        moving += 1
+      i += 1
+    val alongX = maxX - minX >= maxY - minY
+    val low = if alongX then minX else minY
+    val extent = if alongX then maxX - minX else maxY - minY
+    val scale = if extent > 0 then Bins / extent else 0.0
+    java.util.Arrays.fill(histogram, 0)
+    i = 0
+    while i < n do
+      if bodies.invMass(i) != 0 then
+        val bin = binOf(if alongX then bodies.startX(i) else bodies.startY(i), low, scale)
+        histogram(bin) += 1
+        slab(i) = bin
+      else slab(i) = -1
+      i += 1
+    // Bin to slab: a slab ends where the running count reaches its share.
+    var counted = 0
+    var current = 0
+    var bin = 0
+    while bin < Bins do
+      bySlab(bin) = current
+      counted += histogram(bin)
+      while current < Leaves - 1 && counted.toLong * Leaves >= (current + 1).toLong * moving do current += 1
+      bin += 1
+    i = 0
+    while i < n do
+      if slab(i) >= 0 then slab(i) = bySlab(slab(i))
+      i += 1
+
+  /** The bin of coordinate `value` (bins of width 1 / scale from `low`), within 0 until Bins. */
+  private def binOf(value: Double, low: Double, scale: Double): Int =
+    val bin = ((value - low) * scale).toInt
+    math.max(0, math.min(Bins - 1, bin))
+
+  override def toString: String = s"ContactBlocks(levels = $levels, contacts = ${start(if levels == 1 then 1 else BlockCount)})"
+
+private[sims] object ContactBlocks:
+  /** Levels below the root: 2^Depth slabs. */
+  inline val Depth = 3
+  /** Slabs, the tree's leaves. */
+  inline val Leaves = 1 << Depth
+  /** Blocks of all levels: 2^(Depth + 1) - 1. */
+  inline val BlockCount = 2 * Leaves - 1
+  /** Bins of the bodies' histogram along the cut. */
+  inline val Bins = 1024
+  /** Fewer contacts than this are one block: splitting costs more than sharing saves. */
+  inline val MinimumSplit = 4096

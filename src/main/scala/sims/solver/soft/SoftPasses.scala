@@ -1,0 +1,144 @@
+package sims.solver.soft
+
+import sims.solver.Workers
+import sims.solver.soft.SoftBodies.*
+
+/** The soft step's stages that a [[Workers]] set shares out, as tasks made once per world (a
+  * step allocates nothing for them): the contacts' preparation and the bodies' integration in
+  * ranges, the contacts' warm start and passes block by block, level by level (see
+  * [[ContactBlocks]]). Every task writes slots of its own (a range's contacts or bodies, a block
+  * that shares no moving body with the others of its level), so the bits do not depend on the
+  * number of workers.
+  */
+private[sims] final class SoftPasses(workspace: SoftWorkspace):
+  /** The order of this step's contacts, in blocks. */
+  val blocks: ContactBlocks = ContactBlocks()
+
+  // The settings of the stage under way.
+  private var inverseH, contactSpeed, h, gx, gy = 0.0
+  private var useBias = false
+  private var level = 0
+  // The stage under way covers this many items in this many ranges.
+  private var items, ranges = 1
+
+  private val prepareTask: Workers.Task = index =>
+    ContactConstraints.prepare(workspace.table.current, workspace.bodies, workspace.stiffness, from(index),
+      from(index + 1))
+
+  private val warmStartTask: Workers.Task = index =>
+    val block = blocks.levelStart(level) + index
+    ContactConstraints.warmStart(workspace.table.current, workspace.bodies, blocks.order, blocks.start(block),
+      blocks.start(block + 1))
+
+  private val solveTask: Workers.Task = index =>
+    val block = blocks.levelStart(level) + index
+    ContactConstraints.solve(workspace.table.current, workspace.bodies, blocks.order, blocks.start(block),
+      blocks.start(block + 1), inverseH, contactSpeed, useBias)
+
+  private val velocitiesTask: Workers.Task = index => integrateVelocities(from(index), from(index + 1))
+
+  private val positionsTask: Workers.Task = index => integratePositions(from(index), from(index + 1))
+
+  /** Prepares this step's contacts (inverse masses, effective masses, softness), then cuts them
+    * into blocks.
+    */
+  def prepare(workers: Workers): Unit =
+    val contacts = workspace.table.current
+    contacts.ensureMasses()
+    inRanges(workers, contacts.active, prepareTask)
+    blocks.split(contacts, workspace.bodies)
+
+  /** Applies the contacts' accumulated impulses, block by block. */
+  def warmStart(workers: Workers): Unit = byLevel(workers, warmStartTask)
+
+  /** One pass over the contacts, with the bias (solve) or without (relax), block by block. */
+  def solve(workers: Workers, inverseH: Double, contactSpeed: Double, useBias: Boolean): Unit =
+    this.inverseH = inverseH
+    this.contactSpeed = contactSpeed
+    this.useBias = useBias
+    byLevel(workers, solveTask)
+
+  /** Gravity and forces over a substep h for every moving body: v += h (g + F/m), w += h tau/I. */
+  def integrateVelocities(workers: Workers, gx: Double, gy: Double, h: Double): Unit =
+    this.gx = gx
+    this.gy = gy
+    this.h = h
+    inRanges(workers, workspace.bodies.count, velocitiesTask)
+
+  /** Every body's placement over a substep h (see `integratePositions` below). */
+  def integratePositions(workers: Workers, h: Double): Unit =
+    this.h = h
+    inRanges(workers, workspace.bodies.count, positionsTask)
+
+  // The levels in turn, each level's blocks shared out.
+  private def byLevel(workers: Workers, task: Workers.Task): Unit =
+    level = 0
+    while level < blocks.levels do
+      workers.run(blocks.levelSize(level), task)
+      level += 1
+
+  // `count` items in ranges: a few per worker, or one range for few items.
+  private def inRanges(workers: Workers, count: Int, task: Workers.Task): Unit =
+    items = count
+    ranges = if workers.count == 1 || count < SoftPasses.MinimumShared then 1 else SoftPasses.RangesPerWorker * workers.count
+    workers.run(ranges, task)
+
+  // Where range `index` of the stage under way starts.
+  private def from(index: Int): Int = (items.toLong * index / ranges).toInt
+
+  // v += h (g + F/m), w += h tau/I for the moving bodies from until until.
+  private def integrateVelocities(from: Int, until: Int): Unit =
+    val bodies = workspace.bodies
+    val state = bodies.state
+    var i = from
+    while i < until do
+      val m = bodies.invMass(i)
+      if m != 0 then
+        val k = i * SoftBodies.Stride
+        // Times the gravity scale, 1 unless the user set it: exact, the sums unchanged.
+        val scale = bodies.gravityScale(i)
+        state(k + VelocityX) += h * (gx * scale + bodies.substepForceX(i) * m)
+        state(k + VelocityY) += h * (gy * scale + bodies.substepForceY(i) * m)
+        state(k + AngularVelocity) += h * bodies.substepTorque(i) * bodies.invI(i)
+        if bodies.anyDamped then
+          state(k + VelocityX) *= bodies.linearDecay(i)
+          state(k + VelocityY) *= bodies.linearDecay(i)
+          state(k + AngularVelocity) *= bodies.angularDecay(i)
+      i += 1
+
+  /** dp += h v, dAngle += h w, and the turn's cosine and sine: turned by the angle h w itself
+    * (its cosine and sine by their series to the 4th and 5th power, then renormalised: no
+    * trigonometry per body and substep), so that the arms the substeps turn with them stay
+    * where the body's angle puts them after the step. (Turned by the complex number 1 + i h w,
+    * as Box2D does, a body turned by atan(h w) per substep, (h w)^3 / 3 less than its angle: at
+    * 30 rad/s, a joint's anchor 0.4 m out ended the step 1 mm from where its body put it.)
+    */
+  private def integratePositions(from: Int, until: Int): Unit =
+    val state = workspace.bodies.state
+    var i = from
+    while i < until do
+      val k = i * SoftBodies.Stride
+      val vx = state(k + VelocityX); val vy = state(k + VelocityY); val w = state(k + AngularVelocity)
+      state(k + ShiftX) += h * vx
+      state(k + ShiftY) += h * vy
+      if w != 0 then
+        val turn = h * w
+        state(k + Turn) += turn
+        val turn2 = turn * turn
+        val cosTurn = 1 - turn2 * (0.5 - turn2 / 24)
+        val sinTurn = turn * (1 - turn2 * (1.0 / 6 - turn2 / 120))
+        val c = state(k + TurnCos); val s = state(k + TurnSin)
+        val turnedC = c * cosTurn - s * sinTurn
+        val turnedS = s * cosTurn + c * sinTurn
+        val length = math.sqrt(turnedC * turnedC + turnedS * turnedS)
+        state(k + TurnCos) = turnedC / length
+        state(k + TurnSin) = turnedS / length
+      i += 1
+
+  override def toString: String = s"SoftPasses($blocks)"
+
+private[sims] object SoftPasses:
+  /** Fewer bodies or contacts than this are one range: sharing them out costs more than it saves. */
+  inline val MinimumShared = 2048
+  /** Ranges per worker in a shared stage: a worker that starts late finds work left. */
+  inline val RangesPerWorker = 4
