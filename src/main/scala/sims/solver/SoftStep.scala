@@ -117,7 +117,7 @@ final case class SoftStep(
     world.stage = "findContacts"
     findContacts(world, workspace)
     world.stage = "prepare"
-    prepare(workspace, h)
+    prepare(world, workspace, h)
     var substep = 0
     while substep < substeps do
       world.stage = "integrateVelocities"
@@ -219,10 +219,10 @@ final case class SoftStep(
         contactPersistence)
     else workspace.table.begin()
 
-  private def prepare(workspace: SoftWorkspace, h: Double): Unit =
+  private def prepare(world: World, workspace: SoftWorkspace, h: Double): Unit =
     val rate = 1 / h
     workspace.stiffness.set(contactHertz, 0.25 * rate, contactDampingRatio, staticContactFactor, contactLoadDepth, h)
-    workspace.passes.prepare(pool)
+    workspace.passes.prepare(pool, world.gravity.x, world.gravity.y)
     val context = workspace.context
     context.bodies = workspace.bodies
     context.h = h

@@ -1,6 +1,6 @@
 package sims.bench
 
-import sims.scenes.{LayoutScene, Scene}
+import sims.scenes.{LayoutScene, Rain, Scene}
 import sims.solver.{ClassicStep, Solver, SoftStep}
 
 /** One scene built in one engine: stepped by the benchmark, inspected by the sanity check. */
@@ -24,8 +24,12 @@ trait EngineScene:
 enum Engine(val label: String):
   /** SiMS with its default solver, `ClassicStep` (SiMS 1.2's step). */
   case Sims extends Engine("SiMS")
-  /** SiMS with `SoftStep()`, the soft step with its defaults. */
+  /** SiMS with `SoftStep(workers = 1)`, the soft step with its defaults on one thread, as the
+    * peers run.
+    */
   case SimsSoft extends Engine("SiMS-soft")
+  /** SiMS with `SoftStep()`, the soft step with its defaults: as many workers as processors. */
+  case SimsSoftWorkers extends Engine("SiMS-soft-workers")
   /** jBox2D 2.2.1.1 (Java port of Box2D 2.2). */
   case JBox2D extends Engine("jBox2D")
   /** dyn4j 5.0.2. */
@@ -34,7 +38,8 @@ enum Engine(val label: String):
   /** The solver of a SiMS engine (a fresh value each time), none for a peer. */
   def solver: Option[Solver] = this match
     case Sims => Some(ClassicStep)
-    case SimsSoft => Some(SoftStep())
+    case SimsSoft => Some(SoftStep(workers = 1))
+    case SimsSoftWorkers => Some(SoftStep())
     case _ => None
 
   /** Builds the scene in this engine: any scene in SiMS, a layout in the peers. */
@@ -50,7 +55,7 @@ object Engine:
     values.find(e => e.label.equalsIgnoreCase(name) || e.toString.equalsIgnoreCase(name))
       .getOrElse(throw IllegalArgumentException(s"unknown engine $name"))
 
-  /** SiMS's two solvers. */
+  /** SiMS's two solvers, on one thread. */
   val sims: Seq[Engine] = Seq(Sims, SimsSoft)
 
   /** The peers. */
@@ -58,9 +63,20 @@ object Engine:
 
   /** The engines that run a scene: all of them for a layout, SiMS alone (with both solvers)
     * for any other scene (e.g. the original's BallStack), with the soft step alone for a
-    * `softStepOnly` scene (Rain's ragdolls have motors and springs).
+    * `softStepOnly` scene (Rain's ragdolls have motors and springs); the soft step with all the
+    * workers too for a big scene (`sharesOut`).
     */
-  def forScene(scene: Scene): Seq[Engine] = scene match
-    case _: LayoutScene => values.toSeq
-    case soft if soft.softStepOnly => Seq(SimsSoft)
-    case _ => sims
+  def forScene(scene: Scene): Seq[Engine] =
+    val engines = scene match
+      case _: LayoutScene => values.toSeq.filterNot(_ == SimsSoftWorkers)
+      case soft if soft.softStepOnly => Seq(SimsSoft)
+      case _ => sims
+    if sharesOut(scene) then engines :+ SimsSoftWorkers else engines
+
+  /** Whether a scene is big enough for the soft step's workers to share its steps (4,000 bodies
+    * or more): the scenes the bench runs with all of them as well.
+    */
+  def sharesOut(scene: Scene): Boolean = scene match
+    case laidOut: LayoutScene => laidOut.layout.bodies.length >= 4000
+    case _: Rain => true
+    case _ => false

@@ -10,8 +10,8 @@ object Report:
   /** The report: settings, one table of times and allocation (SiMS's two solvers beside the
     * peers, each solver's ratio to the faster peer), one of sanity.
     */
-  def markdown(rows: Seq[RunAll.Row], date: String, forks: Int, warmup: Int, iterations: Int,
-      minutes: Double): String =
+  def markdown(rows: Seq[RunAll.Row], box2d: Map[String, Double], date: String, forks: Int, warmup: Int,
+      iterations: Int, minutes: Double): String =
     val sb = StringBuilder()
     val runtime = Runtime.getRuntime
     sb ++= s"# Step time, SiMS (classic and soft step) vs jBox2D 2.2.1.1 vs dyn4j 5.0.2 ($date)\n\n"
@@ -22,8 +22,9 @@ object Report:
       f"all engines in one run ($minutes%.1f min).\n"
     sb ++= "Settings: gravity (0, -9.81), dt 1/60, 10 velocity and 10 position iterations, friction 0.5, " +
       "restitution 0, density 1; sleeping and continuous collision detection off in the peers. " +
-      "SiMS is the classic step (SiMS 1.2's, the default); SiMS-soft is `SoftStep()` with its defaults " +
-      "(which ignores the iterations).\n\n"
+      "SiMS is the classic step (SiMS 1.2's, the default); SiMS-soft is `SoftStep(workers = 1)`, the soft step " +
+      "with its defaults on one thread as the peers run (it ignores the iterations); SiMS-soft-workers is " +
+      s"`SoftStep()`, all ${runtime.availableProcessors} processors, on the scenes of 4,000 bodies or more.\n\n"
     sb ++= "Times in ms per step (± the JMH 99.9% error); allocation in bytes per step; " +
       "ratio = the SiMS solver's time / the faster peer's time.\n\n"
     sb ++= "| scene | SiMS ms | SiMS-soft ms | jBox2D ms | dyn4j ms | SiMS / faster peer | SiMS-soft / faster peer " +
@@ -41,6 +42,21 @@ object Report:
       val ordered = Seq(Engine.Sims, Engine.SimsSoft, Engine.JBox2D, Engine.Dyn4j).map(find(scene, _))
       val ratios = Engine.sims.map(e => ratio(find(scene, e)))
       sb ++= s"| $scene | ${ordered.map(t).mkString(" | ")} | ${ratios.mkString(" | ")} | ${ordered.map(a).mkString(" | ")} |\n"
+    val big = scenes.filter(scene => box2d.contains(scene) || find(scene, Engine.SimsSoftWorkers).nonEmpty)
+    if big.nonEmpty then
+      sb ++= s"\nThe soft step with ${runtime.availableProcessors} workers, and Box2D v3 (C, one thread, measured in the same " +
+        "run by its own build: the bench's scenes written with its API, its own benchmark program for its scenes; " +
+        "ratio below 1: SiMS is faster):\n\n"
+      sb ++= "| scene | SiMS-soft ms | SiMS-soft-workers ms | speedup | Box2D v3 ms | SiMS-soft / Box2D v3 | " +
+        "SiMS-soft-workers / Box2D v3 |\n|---|---:|---:|---:|---:|---:|---:|\n"
+      for scene <- big do
+        val one = find(scene, Engine.SimsSoft).map(_.microseconds)
+        val all = find(scene, Engine.SimsSoftWorkers).map(_.microseconds)
+        val c = box2d.get(scene).map(_ * 1000)
+        def cell(us: Option[Double]) = us.map(ms).getOrElse("-")
+        def over(a: Option[Double], b: Option[Double]) =
+          (for x <- a; y <- b yield f"${x / y}%.2f").getOrElse("-")
+        sb ++= s"| $scene | ${cell(one)} | ${cell(all)} | ${over(one, all)} | ${cell(c)} | ${over(one, c)} | ${over(all, c)} |\n"
     for engine <- Engine.sims do
       (find("ballpit-16000", engine), find("ballpit-4000", engine)) match
         case (Some(big), Some(small)) =>

@@ -14,7 +14,9 @@ import scala.jdk.CollectionConverters.*
   *
   * Arguments (all optional): scene names to run (default: all), `--forks N` (default 1),
   * `--iterations N` measurement iterations of 1 s (default 5), `--warmup N` warm-up iterations
-  * of 1 s after the warm-up steps (default 3), `--out FILE` (relative to the repository's root).
+  * of 1 s after the warm-up steps (default 3), `--out FILE` (relative to the repository's root),
+  * `--box2d SCRIPT`: Box2D v3's build script (see [[Box2DPeer]]), run after the benchmarks, in the
+  * same window, on the scenes it knows, its times in a second table.
   */
 object RunAll:
   /** One engine's figures for one scene. */
@@ -26,6 +28,7 @@ object RunAll:
     var iterations = 5
     var warmup = 3
     var out: Option[String] = None
+    var box2dScript: Option[String] = None
     val scenes = Seq.newBuilder[String]
     val it = args.iterator
     while it.hasNext do
@@ -34,6 +37,7 @@ object RunAll:
         case "--iterations" => iterations = it.next().toInt
         case "--warmup" => warmup = it.next().toInt
         case "--out" => out = Some(it.next())
+        case "--box2d" => box2dScript = Some(it.next())
         case scene => scenes += scene
     // Cheap scenes first, so an interrupted run still has them.
     val chosen = Some(scenes.result()).filter(_.nonEmpty)
@@ -57,15 +61,16 @@ object RunAll:
         .build()
       Runner(options).run().asScala.toSeq
     }
+    // sbt forks the run in bench/; paths are taken relative to the repository's root.
+    val root = if Files.isDirectory(Path.of("bench/results")) then Path.of(".") else Path.of("..")
+    val box2d = box2dScript.map(script => Box2DPeer.measure(root.resolve(script), chosen)).getOrElse(Map.empty)
     val minutes = (System.nanoTime() - started) / 6e10
     val sanity = Files.readAllLines(sanityFile).asScala.map(_.split("\t", 5)).map(a =>
       (a(0), a(1)) -> (a(2).toBoolean, a(3).toLong, a(4))).toMap
     val rows = results.map(row(_, sanity))
     val date = java.time.LocalDate.now().toString
-    // sbt forks the run in bench/; paths are taken relative to the repository's root.
-    val root = if Files.isDirectory(Path.of("bench/results")) then Path.of(".") else Path.of("..")
     val file = root.resolve(out.getOrElse(s"bench/results/$date.md"))
-    val text = Report.markdown(rows, date, forks, warmup, iterations, minutes)
+    val text = Report.markdown(rows, box2d, date, forks, warmup, iterations, minutes)
     Files.writeString(file, text)
     println(text)
     println(s"written to ${file.toAbsolutePath}")

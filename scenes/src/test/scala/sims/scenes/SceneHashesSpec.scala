@@ -59,7 +59,7 @@ object SceneHashesSpec:
     "Ragdoll" -> ("268f8d75638fda2c", "013ab71470a86bfe"),
     "CompositeShape" -> ("749a252abb71bf86", "84fc548e418c6545"),
     "Pyramid" -> ("6fa8bba0b103b7ea", "99836b506ac2f1a2"),
-    "Pile" -> ("38e39babb7ebe442", "ef7fd2dc3cc2cd1a"),
+    "Pile" -> ("38e39babb7ebe442", "1bda1b854ef9930c"),
     "NewtonsCradle" -> ("2bc439aacf19d9c3", "0fca1f43ee2bf7c3"),
     "Dominoes" -> ("33e2a058c6177ac8", "115011452164d2e1"),
     // Its hook pushes bodies at ray-cast hits: the circle cast measured from the line's closest

@@ -4,8 +4,9 @@ package sims.solver.soft
   * moving body, so that the blocks of one level may be solved at once, by several workers,
   * with the same bits as one after the other.
   *
-  * The moving bodies are cut into 2^Depth slabs of about equal numbers along the longer side of
-  * the box around them (by their places at the start of the step). A contact whose moving bodies
+  * The moving bodies are cut into 2^Depth slabs of about equal numbers, from the ground up (or
+  * along the longer side of the box around them, without gravity), by their places at the
+  * start of the step. A contact whose moving bodies
   * lie in one slab (or that has one moving body) belongs to that slab's block, level 0. The
   * slabs are the leaves of a binary tree; a contact between two slabs belongs to the block of
   * their lowest common node, level 1 for neighbouring pairs of slabs up to level Depth at the
@@ -33,6 +34,7 @@ private[sims] final class ContactBlocks:
   // move).
   private var blockOf, sorted = new Array[Int](0)
   private var slab = new Array[Int](0)
+  private var coordinate = new Array[Double](0)
   private val histogram = new Array[Int](Bins)
   private val bySlab = new Array[Int](Bins)
   private val filled = new Array[Int](BlockCount)
@@ -43,8 +45,10 @@ private[sims] final class ContactBlocks:
   /** The number of blocks of `level`. */
   def levelSize(level: Int): Int = if levels == 1 then 1 else 1 << (Depth - level)
 
-  /** Cuts the first `active` contacts of `contacts` into blocks, between the `bodies`. */
-  def split(contacts: Contacts, bodies: SoftBodies): Unit =
+  /** Cuts the first `active` contacts of `contacts` into blocks, between the `bodies`, under
+    * gravity `(gx, gy)`.
+    */
+  def split(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double): Unit =
     val active = contacts.active
     if order.length < active then
       order = new Array[Int](2 * active)
@@ -57,7 +61,7 @@ private[sims] final class ContactBlocks:
       interleave(0, active, identity = true)
     else
       levels = Depth + 1
-      cutSlabs(bodies)
+      cutSlabs(bodies, gx, gy)
       var c = 0
       while c < active do
         val a = slab(contacts.bodyA(c))
@@ -99,13 +103,18 @@ private[sims] final class ContactBlocks:
       order(from + n) = if identity then i else sorted(i)
       n += 1
 
-  /** Gives every moving body its slab: `Bins` bins along the longer side of the box around the
-    * moving bodies, each bin's bodies in one slab, the slabs cut where the running count passes
-    * each 1 / 2^Depth of the bodies.
+  /** Gives every moving body its slab: `Bins` bins along the slabs' axis over the moving bodies'
+    * range, each bin's bodies in one slab, the slabs cut where the running count passes each
+    * 1 / 2^Depth of the bodies. The axis is the height against gravity `(gx, gy)` (slabs from the
+    * ground up: a stack's supports are solved before what they carry, which settled the big
+    * pyramids more than slabs side by side, mean drift after 10 s 11.3 against 12.1 cm on
+    * large_pyramid, 3.0 against 3.5 cm on pyramid-50), else the longer side of their box.
     */
-  private def cutSlabs(bodies: SoftBodies): Unit =
+  private def cutSlabs(bodies: SoftBodies, gx: Double, gy: Double): Unit =
     val n = bodies.count
     if slab.length < n then slab = new Array[Int](2 * n)
+    if coordinate.length < n then coordinate = new Array[Double](2 * n)
+    val gravity = math.sqrt(gx * gx + gy * gy)
     var minX, minY = Double.PositiveInfinity
     var maxX, maxY = Double.NegativeInfinity
     var moving = 0
@@ -119,15 +128,28 @@ private[sims] final class ContactBlocks:
         if y > maxY then maxY = y
         moving += 1
       i += 1
-    val alongX = maxX - minX >= maxY - minY
-    val low = if alongX then minX else minY
-    val extent = if alongX then maxX - minX else maxY - minY
-    val scale = if extent > 0 then Bins / extent else 0.0
+    // The axis (ax, ay): up against gravity, or the box's longer side.
+    val upward = gravity > 0 && !gravity.isInfinite
+    val wide = maxX - minX >= maxY - minY
+    val ax = if upward then -gx / gravity else if wide then 1.0 else 0.0
+    val ay = if upward then -gy / gravity else if wide then 0.0 else 1.0
+    var low = Double.PositiveInfinity
+    var high = Double.NegativeInfinity
+    i = 0
+    while i < n do
+      if bodies.invMass(i) != 0 then
+        val value = ax * bodies.startX(i) + ay * bodies.startY(i)
+        coordinate(i) = value
+        if value < low then low = value
+        if value > high then high = value
+      i += 1
+    val extent = high - low
+    val scale = if extent > 0 && !extent.isInfinite then Bins / extent else 0.0
     java.util.Arrays.fill(histogram, 0)
     i = 0
     while i < n do
       if bodies.invMass(i) != 0 then
-        val bin = binOf(if alongX then bodies.startX(i) else bodies.startY(i), low, scale)
+        val bin = binOf(coordinate(i), low, scale)
         histogram(bin) += 1
         slab(i) = bin
       else slab(i) = -1

@@ -40,13 +40,13 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   private val positionsTask: Workers.Task = index => integratePositions(from(index), from(index + 1))
 
   /** Prepares this step's contacts (inverse masses, effective masses, softness), then cuts them
-    * into blocks.
+    * into blocks, under gravity `(gx, gy)`.
     */
-  def prepare(workers: Workers): Unit =
+  def prepare(workers: Workers, gx: Double, gy: Double): Unit =
     val contacts = workspace.table.current
     contacts.ensureMasses()
     inRanges(workers, contacts.active, prepareTask)
-    blocks.split(contacts, workspace.bodies)
+    blocks.split(contacts, workspace.bodies, gx, gy)
 
   /** Applies the contacts' accumulated impulses, block by block. */
   def warmStart(workers: Workers): Unit = byLevel(workers, warmStartTask)
