@@ -11,7 +11,9 @@ import sims.solver.soft.SoftBodies.*
   * link per sweep. Its joints are rigid: the solve pass removes the whole position error C
   * within the substep (bias C / h), with a small compliance that keeps a tree near a singular
   * pose from amplifying that bias without bound (see `setUp`); the relax pass is exact and
-  * takes the bias velocity out again.
+  * takes the bias velocity out again. A tree that nothing else acts on (see `markTouched`) is
+  * left alone by the relax passes before another substep and by the warm start, which would
+  * change nothing that lasts: the trees are laid out once for as long as their joints stay.
   *
   * Derivation. With M the moving bodies' mass matrix (fixed bodies are not unknowns: their
   * velocities are given), J the rows' Jacobian and y = -dLambda, the velocity changes dv and
