@@ -251,17 +251,20 @@ object Shape:
   /** Fails unless a quantity computed from a shape's or body's arguments (volume, mass,
     * inertia) is positive and finite with a finite inverse: arguments that each pass their own
     * check can still overflow (a radius of 1e200 squared) or underflow (1e-300 squared) in the
-    * product, and the solvers divide by mass and inertia.
+    * product, and the solvers divide by mass and inertia. `owner` (by name) is built only for
+    * the error: bodies are made in numbers during a game, and describing one lists its shapes.
     */
-  private[sims] def requireDerived(owner: String, name: String, value: Double): Double =
+  private[sims] def requireDerived(owner: => String, name: String, value: Double): Double =
     if !(value > 0) || java.lang.Double.isInfinite(value) || java.lang.Double.isInfinite(1 / value) then
       throw IllegalArgumentException(
         s"$owner: its $name would be $value, not a positive finite number with a finite inverse; " +
           "the arguments are too large or too small")
     value
 
-  /** Fails unless a shape's volume, mass and moment of inertia are usable (see `requireDerived`). */
-  private[dynamics] def checkDerived(shape: Shape, arguments: String): Unit =
+  /** Fails unless a shape's volume, mass and moment of inertia are usable (see `requireDerived`).
+    * `arguments` (by name: the shape's description) is built only for the error.
+    */
+  private[dynamics] def checkDerived(shape: Shape, arguments: => String): Unit =
     requireDerived(arguments, "volume", shape.volume)
     requireDerived(arguments, "mass", shape.mass)
     requireDerived(arguments, "moment of inertia", shape.I)

@@ -117,7 +117,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     */
   def +=(joint: Joint): this.type =
     if joint == null then throw IllegalArgumentException("joint must not be null")
-    if jointBuffer.exists(_ eq joint) then throw IllegalArgumentException(s"joint $joint is already in this world")
+    if joint.world eq this then throw IllegalArgumentException(s"joint $joint is already in this world")
     if joint.world != null then throw IllegalArgumentException(s"joint $joint is already in another world")
     forceIntervalProblem(joint).foreach(problem => throw IllegalArgumentException(problem))
     classicProblem(joint).foreach(problem => throw IllegalArgumentException(problem))
@@ -130,10 +130,9 @@ class World(makeDetector: World => Detector = GridDetector(_))
 
   /** Removes a body (joints on it must be removed too before the next step). */
   def -=(body: Body): this.type =
-    val i = bodyBuffer.indexWhere(_ eq body)
+    val i = if body != null && (body.world eq this) then body.index else -1
     if i >= 0 then
-      // Its island wakes (a body asleep on it would hang in the air); a fixed body may have
-      // held any island up: every body wakes.
+      // Its island wakes (a body asleep on it would hang in the air); a fixed body may have held any island up: all wake.
       if body.fixed then wakeAll() else body.wake()
       revision += 1
       bodyBuffer.remove(i)
@@ -141,7 +140,8 @@ class World(makeDetector: World => Detector = GridDetector(_))
       body.world = null
       body.index = -1
       // The later bodies move down one place: their indices follow.
-      for j <- i until bodyBuffer.length do bodyBuffer(j).index = j
+      var j = i
+      while j < bodyBuffer.length do { bodyBuffer(j).index = j; j += 1 }
       shapeList.remove(body)
       shapesMoved()
       countFlags(body, -1)

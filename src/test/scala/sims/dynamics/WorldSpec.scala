@@ -131,6 +131,26 @@ class WorldSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
     world.shapes shouldBe b.shapes
   }
 
+  test("bodies removed and added back between two reads of the shapes are listed once, in join order") {
+    val world = World()
+    val bodies = IndexedSeq.fill(4)(Body(Circle(1, 1), Circle(0.5, 1)))
+    bodies.foreach(world += _)
+    world.shapes // read: the next changes start from a clean list
+    world -= bodies(1)
+    world -= bodies(2)
+    world += bodies(1) // back, now the last to join
+    world -= bodies(3)
+    world.shapes shouldBe bodies(0).shapes ++ bodies(1).shapes
+    world.shapes.map(_.worldIndex).distinct.size shouldBe 4
+    // Removing a body that is not in this world changes nothing.
+    val elsewhere = Circle(1, 1).asBody
+    World() += elsewhere
+    world -= elsewhere
+    world -= bodies(2)
+    world.bodies shouldBe Seq(bodies(0), bodies(1))
+    elsewhere.index shouldBe 0
+  }
+
   test("each body knows its index in the world's bodies, also after a removal") {
     val world = World()
     val bodies = Seq(Body(Circle(1, 1), Circle(0.5, 1)), Circle(1, 1).asBody, Body(Circle(1, 1), Circle(2, 1)))

@@ -224,11 +224,14 @@ private[sims] final class JointTrees:
       t += 1
     val capacity = n + joints
     if nodeIsJoint.length < capacity then
-      nodeIsJoint = new Array[Boolean](capacity)
-      nodeRef = new Array[Int](capacity); nodeSize = new Array[Int](capacity); nodeParent = new Array[Int](capacity)
-      nodeJacobian = new Array[Int](capacity)
-      d = new Array[Double](6 * capacity); factor = new Array[Double](6 * capacity)
-      z = new Array[Double](3 * capacity); w = new Array[Double](3 * capacity); x = new Array[Double](3 * capacity)
+      // Room to grow, as the other arrays: a world that gains bodies one by one is laid out anew
+      // at each change, and must not allocate each time.
+      val room = 2 * capacity
+      nodeIsJoint = new Array[Boolean](room)
+      nodeRef = new Array[Int](room); nodeSize = new Array[Int](room); nodeParent = new Array[Int](room)
+      nodeJacobian = new Array[Int](room)
+      d = new Array[Double](6 * room); factor = new Array[Double](6 * room)
+      z = new Array[Double](3 * room); w = new Array[Double](3 * room); x = new Array[Double](3 * room)
     java.util.Arrays.fill(bodyNode, 0, n, -1)
     if jointSeen.length < joints then jointSeen = new Array[Boolean](2 * joints)
     java.util.Arrays.fill(jointSeen, 0, joints, false)

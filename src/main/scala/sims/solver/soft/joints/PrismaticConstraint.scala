@@ -46,8 +46,12 @@ private[sims] final class PrismaticConstraint(prismatic: PrismaticJoint) extends
     if prismatic.spring.isEmpty then impulse(2) = 0
     if prismatic.motor.isEmpty then impulse(3) = 0
     if prismatic.limits.isEmpty then { impulse(4) = 0; impulse(5) = 0 }
-    prismatic.spring.foreach(s => springSoftness.set(s.hertz, s.dampingRatio, context.h))
-    maxMotorImpulse = prismatic.motor.fold(0.0)(_.maxForce * context.h)
+    prismatic.spring match
+      case Some(s) => springSoftness.set(s.hertz, s.dampingRatio, context.h)
+      case None =>
+    maxMotorImpulse = prismatic.motor match
+      case Some(m) => m.maxForce * context.h
+      case None => 0.0
 
   /** Sets n, a1, a2 and the line error from the bodies' motion since the step began. */
   private def measure(state: Array[Double]): Unit =
@@ -134,21 +138,24 @@ private[sims] final class PrismaticConstraint(prismatic: PrismaticJoint) extends
           impulse(2))
         slide(bodies, next - impulse(2))
         impulse(2) = next
-      prismatic.motor.foreach { m =>
-        val next = AxisRows.motor(mass, cdot, m.speed, maxMotorImpulse, impulse(3))
-        slide(bodies, next - impulse(3))
-        impulse(3) = next
-      }
-      prismatic.limits.foreach { range =>
-        val lower = AxisRows.end(mass, cdot, translation - range.lower, useBias, context.inverseH,
-          context.jointSoftness, impulse(4))
-        slide(bodies, lower - impulse(4))
-        impulse(4) = lower
-        val upper = AxisRows.end(mass, -cdot, range.upper - translation, useBias, context.inverseH,
-          context.jointSoftness, impulse(5))
-        slide(bodies, impulse(5) - upper)
-        impulse(5) = upper
-      }
+      // Matches rather than closures: a closure here would be allocated in every pass.
+      prismatic.motor match
+        case Some(m) =>
+          val next = AxisRows.motor(mass, cdot, m.speed, maxMotorImpulse, impulse(3))
+          slide(bodies, next - impulse(3))
+          impulse(3) = next
+        case None =>
+      prismatic.limits match
+        case Some(range) =>
+          val lower = AxisRows.end(mass, cdot, translation - range.lower, useBias, context.inverseH,
+            context.jointSoftness, impulse(4))
+          slide(bodies, lower - impulse(4))
+          impulse(4) = lower
+          val upper = AxisRows.end(mass, -cdot, range.upper - translation, useBias, context.inverseH,
+            context.jointSoftness, impulse(5))
+          slide(bodies, impulse(5) - upper)
+          impulse(5) = upper
+        case None =>
 
   override def report(inverseH: Double): Unit =
     val along = impulse(2) + impulse(3) + impulse(4) - impulse(5)

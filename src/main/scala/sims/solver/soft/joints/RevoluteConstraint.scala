@@ -32,8 +32,12 @@ private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends Jo
     if turning then
       val inverse = bodies.invI(i1) + bodies.invI(i2)
       axialMass = if inverse > 0 then 1 / inverse else 0
-      revolute.spring.foreach(s => springSoftness.set(s.hertz, s.dampingRatio, context.h))
-      maxMotorImpulse = revolute.motor.fold(0.0)(_.maxForce * context.h)
+      revolute.spring match
+        case Some(s) => springSoftness.set(s.hertz, s.dampingRatio, context.h)
+        case None =>
+      maxMotorImpulse = revolute.motor match
+        case Some(m) => m.maxForce * context.h
+        case None => 0.0
 
   override def directRows: Int = 2
 
@@ -61,22 +65,25 @@ private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends Jo
         val next = AxisRows.spring(axialMass, cdot, theta, springSoftness, impulse(2))
         turn(bodies, next - impulse(2))
         impulse(2) = next
-      revolute.motor.foreach { m =>
-        val next = AxisRows.motor(axialMass, cdot, m.speed, maxMotorImpulse, impulse(3))
-        turn(bodies, next - impulse(3))
-        impulse(3) = next
-      }
-      revolute.limits.foreach { range =>
-        val lower = AxisRows.end(axialMass, cdot, theta - range.lower, useBias, context.inverseH,
-          context.jointSoftness, impulse(4))
-        turn(bodies, lower - impulse(4))
-        impulse(4) = lower
-        // The upper end's row is -theta: its gap upper - theta, its speed -Cdot, impulse reversed.
-        val upper = AxisRows.end(axialMass, -cdot, range.upper - theta, useBias, context.inverseH,
-          context.jointSoftness, impulse(5))
-        turn(bodies, impulse(5) - upper)
-        impulse(5) = upper
-      }
+      // Matches rather than closures: a closure here would be allocated in every pass.
+      revolute.motor match
+        case Some(m) =>
+          val next = AxisRows.motor(axialMass, cdot, m.speed, maxMotorImpulse, impulse(3))
+          turn(bodies, next - impulse(3))
+          impulse(3) = next
+        case None =>
+      revolute.limits match
+        case Some(range) =>
+          val lower = AxisRows.end(axialMass, cdot, theta - range.lower, useBias, context.inverseH,
+            context.jointSoftness, impulse(4))
+          turn(bodies, lower - impulse(4))
+          impulse(4) = lower
+          // The upper end's row is -theta: its gap upper - theta, its speed -Cdot, impulse reversed.
+          val upper = AxisRows.end(axialMass, -cdot, range.upper - theta, useBias, context.inverseH,
+            context.jointSoftness, impulse(5))
+          turn(bodies, impulse(5) - upper)
+          impulse(5) = upper
+        case None =>
 
   /** The turn impulse `lambda` on body 2, its opposite on body 1. */
   private def turn(bodies: SoftBodies, lambda: Double): Unit =

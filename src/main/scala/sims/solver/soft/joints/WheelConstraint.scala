@@ -36,8 +36,12 @@ private[sims] final class WheelConstraint(wheel: WheelJoint) extends JointConstr
     if wheel.spring.isEmpty then impulse(1) = 0
     if wheel.motor.isEmpty then impulse(2) = 0
     if wheel.limits.isEmpty then { impulse(3) = 0; impulse(4) = 0 }
-    wheel.spring.foreach(sp => springSoftness.set(sp.hertz, sp.dampingRatio, context.h))
-    maxMotorImpulse = wheel.motor.fold(0.0)(_.maxForce * context.h)
+    wheel.spring match
+      case Some(sp) => springSoftness.set(sp.hertz, sp.dampingRatio, context.h)
+      case None =>
+    maxMotorImpulse = wheel.motor match
+      case Some(m) => m.maxForce * context.h
+      case None => 0.0
     val inverse = bodies.invI(i1) + bodies.invI(i2)
     turnMass = if inverse > 0 then 1 / inverse else 0
 
@@ -98,29 +102,32 @@ private[sims] final class WheelConstraint(wheel: WheelJoint) extends JointConstr
     val bodies = context.bodies
     val state = bodies.state
     measure(state)
-    wheel.motor.foreach { m =>
-      val s1 = ends.index1 * Stride
-      val s2 = ends.index2 * Stride
-      val cdot = state(s2 + AngularVelocity) - state(s1 + AngularVelocity)
-      val next = AxisRows.motor(turnMass, cdot, m.speed, maxMotorImpulse, impulse(2))
-      turn(bodies, next - impulse(2))
-      impulse(2) = next
-    }
+    // Matches rather than closures: a closure here would be allocated in every pass.
+    wheel.motor match
+      case Some(m) =>
+        val s1 = ends.index1 * Stride
+        val s2 = ends.index2 * Stride
+        val cdot = state(s2 + AngularVelocity) - state(s1 + AngularVelocity)
+        val next = AxisRows.motor(turnMass, cdot, m.speed, maxMotorImpulse, impulse(2))
+        turn(bodies, next - impulse(2))
+        impulse(2) = next
+      case None =>
     val axial = mass(bodies, slide1, slide2)
     if wheel.spring.nonEmpty then
       val next = AxisRows.spring(axial, speed(state, axisX, axisY, slide1, slide2), along, springSoftness, impulse(1))
       push(bodies, axisX, axisY, slide1, slide2, next - impulse(1))
       impulse(1) = next
-    wheel.limits.foreach { range =>
-      val lower = AxisRows.end(axial, speed(state, axisX, axisY, slide1, slide2), along - range.lower, useBias,
-        context.inverseH, context.jointSoftness, impulse(3))
-      push(bodies, axisX, axisY, slide1, slide2, lower - impulse(3))
-      impulse(3) = lower
-      val upper = AxisRows.end(axial, -speed(state, axisX, axisY, slide1, slide2), range.upper - along, useBias,
-        context.inverseH, context.jointSoftness, impulse(4))
-      push(bodies, axisX, axisY, slide1, slide2, impulse(4) - upper)
-      impulse(4) = upper
-    }
+    wheel.limits match
+      case Some(range) =>
+        val lower = AxisRows.end(axial, speed(state, axisX, axisY, slide1, slide2), along - range.lower, useBias,
+          context.inverseH, context.jointSoftness, impulse(3))
+        push(bodies, axisX, axisY, slide1, slide2, lower - impulse(3))
+        impulse(3) = lower
+        val upper = AxisRows.end(axial, -speed(state, axisX, axisY, slide1, slide2), range.upper - along, useBias,
+          context.inverseH, context.jointSoftness, impulse(4))
+        push(bodies, axisX, axisY, slide1, slide2, impulse(4) - upper)
+        impulse(4) = upper
+      case None =>
     // The line, soft in the solve pass, rigid in the relax pass.
     var bias = 0.0
     var massScale = 1.0
