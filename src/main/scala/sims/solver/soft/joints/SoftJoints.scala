@@ -26,6 +26,9 @@ private[sims] final class SoftJoints:
   private var knownCount = 0
   // The constraints of joints that are in the world, by joint; rebuilt when the list changes.
   private var byJoint = java.util.IdentityHashMap[Joint, JointConstraint]()
+  // The map `learn` fills next, kept between calls: a world whose joints change often (ragdolls
+  // made and taken away) would otherwise allocate a table of all its joints each time.
+  private var spareByJoint = java.util.IdentityHashMap[Joint, JointConstraint]()
   private var forceBodyStamp = new Array[Int](0)
   private var stamp = 0
   // The impulses at the start of the step under way (`beginStep`), for `undoStep`.
@@ -73,11 +76,11 @@ private[sims] final class SoftJoints:
     * that left are forgotten, new ones get theirs.
     */
   private def learn(joints: ArrayBuffer[Joint]): Unit =
-    val next = java.util.IdentityHashMap[Joint, JointConstraint]()
+    val next = spareByJoint // empty
     knownCount = joints.length
     if known.length < knownCount then
-      known = new Array[Joint](knownCount)
-      knownConstraints = new Array[JointConstraint](knownCount)
+      known = new Array[Joint](2 * knownCount)
+      knownConstraints = new Array[JointConstraint](2 * knownCount)
     var i = 0
     while i < knownCount do
       val j = joints(i)
@@ -88,6 +91,8 @@ private[sims] final class SoftJoints:
       i += 1
     java.util.Arrays.fill(known.asInstanceOf[Array[AnyRef]], knownCount, known.length, null)
     java.util.Arrays.fill(knownConstraints.asInstanceOf[Array[AnyRef]], knownCount, knownConstraints.length, null)
+    spareByJoint = byJoint
+    spareByJoint.clear() // holds no joint that left
     byJoint = next
 
   private def markForceBody(index: Int): Unit =
