@@ -1,6 +1,7 @@
 package sims.solver.soft.joints
 
-import sims.solver.soft.Softness
+import sims.dynamics.joints.{JointLimits, JointMotor, JointSpring}
+import sims.solver.soft.{SoftContext, Softness}
 
 /** The one-dimensional rows every joint with a coordinate shares (an angle for a revolute
   * joint, a translation for a prismatic or wheel joint): a spring, a motor and the two ends of
@@ -39,3 +40,30 @@ private[sims] object AxisRows:
       impulseScale = jointSoftness.impulseScale
     val next = accumulated - massScale * mass * (cdot + bias) - impulseScale * accumulated
     math.max(next, 0.0)
+
+  /** Sets `softness` to the joint's spring for a substep of h, if it has one (once a step). */
+  def prepareSpring(spring: Option[JointSpring], softness: Softness, h: Double): Unit =
+    spring match
+      case Some(s) => softness.set(s.hertz, s.dampingRatio, h)
+      case None =>
+
+  /** The largest impulse the joint's motor may apply in a substep of h (0 without a motor). */
+  def maxMotorImpulse(motor: Option[JointMotor], h: Double): Double =
+    motor match
+      case Some(m) => m.maxForce * h
+      case None => 0.0
+
+  /** Both ends of `range` on a coordinate at `c` with effective mass `mass`, their accumulated
+    * impulses at `impulse(at)` (lower) and `impulse(at + 1)` (upper); `apply` applies a change of
+    * impulse along the coordinate's Jacobian, and `cdot` (read again after the lower end's change)
+    * is its velocity. Inline, with the caller's `apply` inlined too: no closure in the passes.
+    */
+  inline def range(range: JointLimits, mass: Double, inline cdot: Double, c: Double, useBias: Boolean,
+      context: SoftContext, impulse: Array[Double], at: Int, inline apply: Double => Unit): Unit =
+    val lower = end(mass, cdot, c - range.lower, useBias, context.inverseH, context.jointSoftness, impulse(at))
+    apply(lower - impulse(at))
+    impulse(at) = lower
+    // The upper end's row is -c: its gap upper - c, its speed -Cdot, its impulse reversed.
+    val upper = end(mass, -cdot, range.upper - c, useBias, context.inverseH, context.jointSoftness, impulse(at + 1))
+    apply(impulse(at + 1) - upper)
+    impulse(at + 1) = upper

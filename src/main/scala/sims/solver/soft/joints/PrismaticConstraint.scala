@@ -46,12 +46,8 @@ private[sims] final class PrismaticConstraint(prismatic: PrismaticJoint) extends
     if prismatic.spring.isEmpty then impulse(2) = 0
     if prismatic.motor.isEmpty then impulse(3) = 0
     if prismatic.limits.isEmpty then { impulse(4) = 0; impulse(5) = 0 }
-    prismatic.spring match
-      case Some(s) => springSoftness.set(s.hertz, s.dampingRatio, context.h)
-      case None =>
-    maxMotorImpulse = prismatic.motor match
-      case Some(m) => m.maxForce * context.h
-      case None => 0.0
+    AxisRows.prepareSpring(prismatic.spring, springSoftness, context.h)
+    maxMotorImpulse = AxisRows.maxMotorImpulse(prismatic.motor, context.h)
 
   /** Sets n, a1, a2 and the line error from the bodies' motion since the step began. */
   private def measure(state: Array[Double]): Unit =
@@ -147,14 +143,7 @@ private[sims] final class PrismaticConstraint(prismatic: PrismaticJoint) extends
         case None =>
       prismatic.limits match
         case Some(range) =>
-          val lower = AxisRows.end(mass, cdot, translation - range.lower, useBias, context.inverseH,
-            context.jointSoftness, impulse(4))
-          slide(bodies, lower - impulse(4))
-          impulse(4) = lower
-          val upper = AxisRows.end(mass, -cdot, range.upper - translation, useBias, context.inverseH,
-            context.jointSoftness, impulse(5))
-          slide(bodies, impulse(5) - upper)
-          impulse(5) = upper
+          AxisRows.range(range, mass, cdot, translation, useBias, context, impulse, 4, slide(bodies, _))
         case None =>
 
   override def report(inverseH: Double): Unit =

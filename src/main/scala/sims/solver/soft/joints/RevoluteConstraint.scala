@@ -32,12 +32,8 @@ private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends Jo
     if turning then
       val inverse = bodies.invI(i1) + bodies.invI(i2)
       axialMass = if inverse > 0 then 1 / inverse else 0
-      revolute.spring match
-        case Some(s) => springSoftness.set(s.hertz, s.dampingRatio, context.h)
-        case None =>
-      maxMotorImpulse = revolute.motor match
-        case Some(m) => m.maxForce * context.h
-        case None => 0.0
+      AxisRows.prepareSpring(revolute.spring, springSoftness, context.h)
+      maxMotorImpulse = AxisRows.maxMotorImpulse(revolute.motor, context.h)
 
   override def directRows: Int = 2
 
@@ -73,16 +69,7 @@ private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends Jo
           impulse(3) = next
         case None =>
       revolute.limits match
-        case Some(range) =>
-          val lower = AxisRows.end(axialMass, cdot, theta - range.lower, useBias, context.inverseH,
-            context.jointSoftness, impulse(4))
-          turn(bodies, lower - impulse(4))
-          impulse(4) = lower
-          // The upper end's row is -theta: its gap upper - theta, its speed -Cdot, impulse reversed.
-          val upper = AxisRows.end(axialMass, -cdot, range.upper - theta, useBias, context.inverseH,
-            context.jointSoftness, impulse(5))
-          turn(bodies, impulse(5) - upper)
-          impulse(5) = upper
+        case Some(range) => AxisRows.range(range, axialMass, cdot, theta, useBias, context, impulse, 4, turn(bodies, _))
         case None =>
 
   /** The turn impulse `lambda` on body 2, its opposite on body 1. */

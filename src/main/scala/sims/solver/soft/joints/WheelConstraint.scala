@@ -36,12 +36,8 @@ private[sims] final class WheelConstraint(wheel: WheelJoint) extends JointConstr
     if wheel.spring.isEmpty then impulse(1) = 0
     if wheel.motor.isEmpty then impulse(2) = 0
     if wheel.limits.isEmpty then { impulse(3) = 0; impulse(4) = 0 }
-    wheel.spring match
-      case Some(sp) => springSoftness.set(sp.hertz, sp.dampingRatio, context.h)
-      case None =>
-    maxMotorImpulse = wheel.motor match
-      case Some(m) => m.maxForce * context.h
-      case None => 0.0
+    AxisRows.prepareSpring(wheel.spring, springSoftness, context.h)
+    maxMotorImpulse = AxisRows.maxMotorImpulse(wheel.motor, context.h)
     val inverse = bodies.invI(i1) + bodies.invI(i2)
     turnMass = if inverse > 0 then 1 / inverse else 0
 
@@ -119,14 +115,8 @@ private[sims] final class WheelConstraint(wheel: WheelJoint) extends JointConstr
       impulse(1) = next
     wheel.limits match
       case Some(range) =>
-        val lower = AxisRows.end(axial, speed(state, axisX, axisY, slide1, slide2), along - range.lower, useBias,
-          context.inverseH, context.jointSoftness, impulse(3))
-        push(bodies, axisX, axisY, slide1, slide2, lower - impulse(3))
-        impulse(3) = lower
-        val upper = AxisRows.end(axial, -speed(state, axisX, axisY, slide1, slide2), range.upper - along, useBias,
-          context.inverseH, context.jointSoftness, impulse(4))
-        push(bodies, axisX, axisY, slide1, slide2, impulse(4) - upper)
-        impulse(4) = upper
+        AxisRows.range(range, axial, speed(state, axisX, axisY, slide1, slide2), along, useBias, context, impulse, 3,
+          push(bodies, axisX, axisY, slide1, slide2, _))
       case None =>
     // The line, soft in the solve pass, rigid in the relax pass.
     var bias = 0.0
