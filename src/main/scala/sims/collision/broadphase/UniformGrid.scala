@@ -3,7 +3,7 @@ package sims.collision.broadphase
 import scala.collection.mutable.ArrayBuffer
 import sims.Defaults
 import sims.collision.{PairBuffer, PairFilter}
-import sims.dynamics.Shape
+import sims.dynamics.{Body, Shape}
 
 /** SiMS's grid broadphase (docs/collisions.md): square cells of side `gridSide`; two shapes are a
   * candidate pair when they share a cell, their bounds overlap and [[PairFilter]] accepts them.
@@ -38,6 +38,11 @@ private[sims] final class UniformGrid extends Broadphase:
   // is max(cell(a), cell(b)): computed once per shape instead of once per candidate.
   private var boxMinX, boxMinY, boxMaxX, boxMaxY = new Array[Double](0)
   private var placement = new Array[Byte](0)
+  // Per shape, from the last update: its body, and whether the filter's answer for it follows
+  // from that alone (see `filterKind`): a pair of two such shapes is judged from these arrays,
+  // without reading the shapes and bodies (a cache miss each, for every candidate).
+  private var owner = new Array[Body](0)
+  private var filterKind = new Array[Byte](0)
   private var fineX0, fineY0, fineX1, fineY1 = new Array[Int](0)
   // Coarse cells as Longs: floor(coordinate / gridSide) is exact in a Long for any coordinate
   // up to 1.8e19 gridSides, so far from the origin pairs keep SiMS's order (in an Int it
@@ -91,6 +96,8 @@ private[sims] final class UniformGrid extends Broadphase:
       val s = shapes(i)
       if (!s.collidable || s.sensor) && !everyShape then placement(i) = Ignored
       else
+        owner(i) = s.body
+        filterKind(i) = kindOf(s)
         val reach =
           if sweep == 0 then margin
           else
@@ -340,7 +347,16 @@ private[sims] final class UniformGrid extends Broadphase:
   private def candidates(j: Int, i: Int): Boolean =
     pairTests += 1
     sims.geometry.AABB.overlaps(boxMinX(j), boxMinY(j), boxMaxX(j), boxMaxY(j),
-      boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && PairFilter.accepts(shapes(j), shapes(i))
+      boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && accepts(j, i)
+
+  /** [[PairFilter.accepts]] for shapes j and i: for two plain shapes, different bodies not both
+    * immovable, which is what the filter's rules come to for them.
+    */
+  private def accepts(j: Int, i: Int): Boolean =
+    val a = filterKind(j)
+    val b = filterKind(i)
+    if a != General && b != General then (owner(j) ne owner(i)) && !(a == PlainImmovable && b == PlainImmovable)
+    else PairFilter.accepts(shapes(j), shapes(i))
 
   /** Inserts partner j of shape i into the group: in the coarse grid's order (by the rank of
     * the coarse cell holding the overlap's corner among i's cells, then the later shape first),
@@ -369,6 +385,7 @@ private[sims] final class UniformGrid extends Broadphase:
       boxMinX = new Array[Double](capacity); boxMinY = new Array[Double](capacity)
       boxMaxX = new Array[Double](capacity); boxMaxY = new Array[Double](capacity)
       placement = new Array[Byte](capacity)
+      owner = new Array[Body](capacity); filterKind = new Array[Byte](capacity)
       coarseX0 = new Array[Long](capacity); coarseY0 = new Array[Long](capacity)
       fineX0 = new Array[Int](capacity); fineY0 = new Array[Int](capacity)
       fineX1 = new Array[Int](capacity); fineY1 = new Array[Int](capacity)
@@ -388,6 +405,22 @@ private[sims] object UniformGrid:
   private val Wide: Byte = 1
   private val Large: Byte = 2
   private val Ignored: Byte = 3
+
+  // A shape's kind for the filter (see `kindOf`).
+  private val General: Byte = 0
+  private val PlainMovable: Byte = 1
+  private val PlainImmovable: Byte = 2
+
+  /** Plain (movable or immovable) when the filter accepts the shape with any other plain shape
+    * of another body, not both immovable: collidable, not a sensor, the default category, mask
+    * and group, no transient shapes and no joint that keeps its body from colliding; otherwise
+    * General, and the filter itself decides.
+    */
+  private def kindOf(s: Shape): Byte =
+    if s.collidable && !s.sensor && s.groupIndex == Defaults.GroupIndex && s.categoryBits == Defaults.CategoryBits &&
+      s.maskBits == Defaults.MaskBits && s.transientShapes.isEmpty && (s.body.jointPartners eq Nil)
+    then if s.body.immovable then PlainImmovable else PlainMovable
+    else General
 
   /** Number of cells from (x0, y0) to (x1, y1), inclusive, as a Double: with cell indices
     * clamped to the Int range a Long product overflows (2^32 squared) and a huge shape would
