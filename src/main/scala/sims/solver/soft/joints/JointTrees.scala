@@ -49,6 +49,8 @@ private[sims] final class JointTrees:
   // the substitution (k x 3, at 6 node); the right side z, w = D^-1 z and the solution x, at 3 node.
   private var d, factor = new Array[Double](0)
   private var z, w, x = new Array[Double](0)
+  // Per body node: its body's mass and moment of inertia for this step, at 2 node and 2 node + 1.
+  private var bodyMass = new Array[Double](0)
   // The trees: tree k's nodes are treeStart(k) until treeStart(k + 1); whether something else
   // acts on it this step (see `markTouched`).
   private var treeCount = 0
@@ -232,6 +234,7 @@ private[sims] final class JointTrees:
       nodeJacobian = new Array[Int](room)
       d = new Array[Double](6 * room); factor = new Array[Double](6 * room)
       z = new Array[Double](3 * room); w = new Array[Double](3 * room); x = new Array[Double](3 * room)
+      bodyMass = new Array[Double](2 * room)
     java.util.Arrays.fill(bodyNode, 0, n, -1)
     if jointSeen.length < joints then jointSeen = new Array[Boolean](2 * joints)
     java.util.Arrays.fill(jointSeen, 0, joints, false)
@@ -362,9 +365,10 @@ private[sims] final class JointTrees:
     * ([[JointConstraint.solvesAxial]]). The others' warm start would change nothing: a tree's
     * exact solve sets its rows' velocities whatever they were (an impulse J^T lambda along its
     * own rows is undone by it exactly), and only what is solved before it in a pass sees the
-    * joints' load.
+    * joints' load. Takes the trees' bodies' masses for the step too.
     */
   def markTouched(contacts: Contacts, bodies: SoftBodies): Unit =
+    takeMasses(bodies)
     if treeCount > 0 then
       if bodyMark.length < bodies.count then bodyMark = new Array[Int](2 * bodies.count)
       markStamp += 1
@@ -390,26 +394,33 @@ private[sims] final class JointTrees:
         treeTouched(tree) = needed
         tree += 1
 
+  /** Each body node's mass and moment of inertia for this step's passes. */
+  private def takeMasses(bodies: SoftBodies): Unit =
+    var node = 0
+    while node < nodeCount do
+      if !nodeIsJoint(node) then
+        val b = nodeRef(node)
+        bodyMass(2 * node) = 1 / bodies.invMass(b)
+        bodyMass(2 * node + 1) = 1 / bodies.invI(b)
+      node += 1
+
   private def mark(index: Int): Unit = if index >= 0 && index < bodyMark.length then bodyMark(index) = markStamp
 
   /** Applies the accumulated impulses of the joints of the trees that need it (see
-    * `markTouched`); the others' start again from 0. (The solve pass's compliance reads the
-    * accumulated impulse as what the substep applied so far: with nothing applied, 0. Its exact
-    * solve then gives the same impulses and velocities as after a warm start.)
+    * `markTouched`). The others start every substep from 0 without being visited: their solve
+    * pass takes the accumulated impulse as 0 and sets it (see `solve`). (The solve pass's
+    * compliance reads the accumulated impulse as what the substep applied so far: with nothing
+    * applied, 0. Its exact solve then gives the same impulses and velocities as after a warm
+    * start.)
     */
   def warmStart(context: SoftContext): Unit =
     var tree = 0
     while tree < treeCount do
-      val applied = treeTouched(tree)
-      var node = treeStart(tree)
-      while node < treeStart(tree + 1) do
-        if nodeIsJoint(node) then
-          val constraint = direct(nodeRef(node))
-          if applied then constraint.warmStart(context)
-          else
-            constraint.impulse(0) = 0
-            if nodeSize(node) == 2 then constraint.impulse(1) = 0
-        node += 1
+      if treeTouched(tree) then
+        var node = treeStart(tree)
+        while node < treeStart(tree + 1) do
+          if nodeIsJoint(node) then direct(nodeRef(node)).warmStart(context)
+          node += 1
       tree += 1
 
   /** One pass over every tree: the rows the trees leave to Gauss-Seidel (limits, motors,
@@ -439,15 +450,18 @@ private[sims] final class JointTrees:
               rows.target(jacobians, 12 * joint, positionError, 2 * joint)
               direct(joint).rowsAt(context, rows)
             node += 1
-          setUp(context, state, useBias, from, until)
+          // A tree the warm start left alone starts the substep's solve pass from 0.
+          val fresh = useBias && !treeTouched(tree)
+          setUp(context, state, useBias, fresh, from, until)
           eliminate(from, until)
-          substitute(state, from, until)
+          substitute(state, fresh, from, until)
         tree += 1
 
   /** Each node's block of H and right side: a body's mass matrix and 0; a joint's -G (its
     * compliance, in the solve pass) and -(Cdot + bias + G lambdaAcc).
     */
-  private def setUp(context: SoftContext, state: Array[Double], useBias: Boolean, from: Int, until: Int): Unit =
+  private def setUp(context: SoftContext, state: Array[Double], useBias: Boolean, fresh: Boolean, from: Int,
+      until: Int): Unit =
     val bodies = context.bodies
     // A compliance G = Compliance K in the solve pass, K the joint's own effective mass
     // matrix (its two bodies alone): J dv + Cdot + C / h + G (acc + dLambda) = 0, so D = -G
@@ -472,27 +486,28 @@ private[sims] final class JointTrees:
         val m1 = bodies.invMass(index1(joint)); val i1 = bodies.invI(index1(joint))
         val m2 = bodies.invMass(index2(joint)); val i2 = bodies.invI(index2(joint))
         val accumulated = direct(joint).impulse
+        val acc0 = if fresh then 0.0 else accumulated(0)
         val cdot0 = rowVelocity(j1, state, s1) + rowVelocity(j2, state, s2)
         val bias0 = if useBias then positionError(2 * joint) * inverseH else 0.0
         if nodeSize(node) == 1 then
           val g00 = compliance * (coupling(j1, j1, m1, i1) + coupling(j2, j2, m2, i2))
           d(o) = -g00
-          z(v) = -(cdot0 + bias0 + g00 * accumulated(0))
+          z(v) = -(cdot0 + bias0 + g00 * acc0)
         else
           val cdot1 = rowVelocity(j1 + 3, state, s1) + rowVelocity(j2 + 3, state, s2)
           val bias1 = if useBias then positionError(2 * joint + 1) * inverseH else 0.0
           val g00 = compliance * (coupling(j1, j1, m1, i1) + coupling(j2, j2, m2, i2))
           val g01 = compliance * (coupling(j1, j1 + 3, m1, i1) + coupling(j2, j2 + 3, m2, i2))
           val g11 = compliance * (coupling(j1 + 3, j1 + 3, m1, i1) + coupling(j2 + 3, j2 + 3, m2, i2))
+          val acc1 = if fresh then 0.0 else accumulated(1)
           d(o) = -g00; d(o + 1) = -g01; d(o + 3) = -g11
-          z(v) = -(cdot0 + bias0 + g00 * accumulated(0) + g01 * accumulated(1))
-          z(v + 1) = -(cdot1 + bias1 + g01 * accumulated(0) + g11 * accumulated(1))
+          z(v) = -(cdot0 + bias0 + g00 * acc0 + g01 * acc1)
+          z(v + 1) = -(cdot1 + bias1 + g01 * acc0 + g11 * acc1)
       else
-        val b = nodeRef(node)
-        val mass = 1 / bodies.invMass(b)
+        val mass = bodyMass(2 * node)
         d(o) = mass; d(o + 1) = 0; d(o + 2) = 0
         d(o + 3) = mass; d(o + 4) = 0
-        d(o + 5) = 1 / bodies.invI(b)
+        d(o + 5) = bodyMass(2 * node + 1)
         z(v) = 0; z(v + 1) = 0; z(v + 2) = 0
       node += 1
 
@@ -586,7 +601,7 @@ private[sims] final class JointTrees:
   /** Roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the factor) x_p; then the velocities
     * change by their bodies' x, each joint's accumulated impulse by -x.
     */
-  private def substitute(state: Array[Double], from: Int, until: Int): Unit =
+  private def substitute(state: Array[Double], fresh: Boolean, from: Int, until: Int): Unit =
     var node = from
     while node < until do
       val o = 6 * node
@@ -603,8 +618,12 @@ private[sims] final class JointTrees:
           val p0 = x(pv); val p1 = x(pv + 1); val p2 = x(pv + 2)
           x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1 + factor(o + 2) * p2)
           if nodeSize(node) == 2 then x(v + 1) = w(v + 1) - (factor(o + 3) * p0 + factor(o + 4) * p1 + factor(o + 5) * p2)
-        accumulated(0) -= x(v)
-        if nodeSize(node) == 2 then accumulated(1) -= x(v + 1)
+        if fresh then
+          accumulated(0) = -x(v)
+          if nodeSize(node) == 2 then accumulated(1) = -x(v + 1)
+        else
+          accumulated(0) -= x(v)
+          if nodeSize(node) == 2 then accumulated(1) -= x(v + 1)
       else
         if parent < 0 then
           x(v) = w(v); x(v + 1) = w(v + 1); x(v + 2) = w(v + 2)
@@ -628,11 +647,11 @@ private[sims] final class JointTrees:
   /** Rows at r and q of a joint's Jacobian for one body through that body's inverse mass: its
     * part of the joint's own effective mass matrix J M^-1 J^T.
     */
-  private def coupling(r: Int, q: Int, invMass: Double, invI: Double): Double =
+  private inline def coupling(r: Int, q: Int, invMass: Double, invI: Double): Double =
     invMass * (jacobians(r) * jacobians(q) + jacobians(r + 1) * jacobians(q + 1)) + invI * jacobians(r + 2) * jacobians(q + 2)
 
   /** The Jacobian row at `row` times the velocity of the body whose state starts at `s`. */
-  private def rowVelocity(row: Int, state: Array[Double], s: Int): Double =
+  private inline def rowVelocity(row: Int, state: Array[Double], s: Int): Double =
     jacobians(row) * state(s + VelocityX) + jacobians(row + 1) * state(s + VelocityY) +
       jacobians(row + 2) * state(s + AngularVelocity)
 
