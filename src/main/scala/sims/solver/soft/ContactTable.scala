@@ -21,14 +21,31 @@ private[sims] final class ContactTable:
   // The committed contacts by pair key (`PairKey`): the pair's slot holds its contact's index as
   // its stamp.
   private val index = new PairTable(keepsShapes = false)
+  // The committed contact `lastOf` tries before the table: the one after the contact it found
+  // last. The pairs come in much the same order every step, so this is usually the one, for
+  // a comparison of keys instead of a probe of the table. Not when a pair is listed twice:
+  // the table holds its last contact, which the guess might miss.
+  private var guess = 0
+  private var guessing = true
 
   /** Starts building this step's contacts. */
-  def begin(): Unit = current.clear()
+  def begin(): Unit =
+    current.clear()
+    guess = 0
 
   /** The committed contact of the shape pair `key`, or -1. */
   def lastOf(key: Long): Int =
-    val slot = index.find(key)
-    if slot >= 0 then index.stampAt(slot).toInt else -1
+    val g = guess
+    if guessing && g < committed.count && committed.keys(g) == key then
+      guess = g + 1
+      g
+    else
+      val slot = index.find(key)
+      if slot < 0 then -1
+      else
+        val c = index.stampAt(slot).toInt
+        guess = c + 1
+        c
 
   /** Makes this step's contacts the last step's. */
   def commit(): Unit =
@@ -47,6 +64,8 @@ private[sims] final class ContactTable:
       // A pair listed twice (a user's detector may) finds its last contact, as it always has.
       index.put(committed.keys(c), c)
       c += 1
+    guessing = index.size == committed.count
+    guess = 0
 
   /** A copy of the committed generation (for a snapshot of the world). */
   def copyCommitted(): Contacts = committed.copy()

@@ -1,0 +1,47 @@
+package sims.solver.soft
+
+import org.scalatest.funsuite.AnyFunSuite
+
+/** The contact table's lookup of the last step's contact of a pair: the same answer whether the
+  * pairs come in the last step's order (the guess) or not (the table), a pair listed twice included.
+  */
+class ContactTableSpec extends AnyFunSuite:
+  /** A table whose committed generation holds contacts with these keys, in this order. */
+  private def committedWith(keys: Long*): ContactTable =
+    val table = ContactTable()
+    table.begin()
+    for key <- keys do
+      val c = table.current.add(1)
+      table.current.keys(c) = key
+    table.commit()
+    table.begin()
+    table
+
+  test("lastOf finds each committed contact by its pair's key, in the committed order or any other") {
+    val keys = Seq(7L, 3L, 12L, 40L, 5L)
+    val inOrder = committedWith(keys*)
+    assert(keys.map(inOrder.lastOf) == Seq(0, 1, 2, 3, 4))
+    val shuffled = committedWith(keys*)
+    assert(Seq(40L, 5L, 7L, 12L, 3L, 40L).map(shuffled.lastOf) == Seq(3, 4, 0, 2, 1, 3))
+  }
+
+  test("lastOf gives -1 for a pair with no committed contact, and finds the next one after it") {
+    val table = committedWith(7L, 3L, 12L)
+    assert(Seq(7L, 99L, 3L, 1L, 12L).map(table.lastOf) == Seq(0, -1, 1, -1, 2))
+  }
+
+  test("a pair listed twice finds its last contact, even where the one after the last found is its first") {
+    val table = committedWith(7L, 3L, 12L, 3L)
+    assert(table.lastOf(7L) == 0)
+    assert(table.lastOf(3L) == 3)
+    assert(table.lastOf(12L) == 2)
+    assert(table.lastOf(3L) == 3)
+  }
+
+  test("a new step looks from the first committed contact again") {
+    val table = committedWith(7L, 3L)
+    assert(table.lastOf(3L) == 1)
+    table.begin()
+    assert(table.lastOf(7L) == 0)
+    assert(table.lastOf(3L) == 1)
+  }
