@@ -36,6 +36,17 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     }
   }
 
+  test("grid pairs equal brute-force pairs with the shapes in clusters 1 km apart (a sparse grid)") {
+    forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0), minSuccessful(20)) { (shapes, side) =>
+      shapes.zipWithIndex.foreach((s, i) => s.pos = s.pos + Vector2D(1000.0 * (i % 3), -700.0 * (i % 2)))
+      val world = scene(shapes, side)
+      val detector = world.detector.asInstanceOf[GridDetector]
+      detector.detect()
+      detector.candidatePairs.map(p => (p._1.worldIndex, p._2.worldIndex)).sorted shouldBe
+        bruteForce(world).map(p => (p._1.worldIndex, p._2.worldIndex)).sorted
+    }
+  }
+
   test("pair filters: same body, not collidable, transient, both fixed") {
     val world = World()
     val a = Circle(1, 1)

@@ -1,9 +1,11 @@
 package sims.collision.broadphase
 
-/** The broadphase's sparse grid: an open-addressing hash table from cell (cx, cy) to a chain of
-  * entries (shape indices), rebuilt every step without allocating once it has grown. Lookups
-  * depend only on the cell coordinates, never on object identity, so pair order is
-  * deterministic.
+/** The broadphase's grid: from cell (cx, cy) to a chain of entries (shape indices), rebuilt
+  * every step without allocating once it has grown. Sparse, an open-addressing hash table of
+  * the cells in use; or dense, when the cells in use lie in a box of `columns` x `rows` from
+  * (0, 0) with not many more cells than shapes (a pile, a pit): slot cx rows + cy, no hashing.
+  * Lookups depend only on the cell coordinates, never on object identity, so pair order is
+  * deterministic, and the same in both forms.
   */
 private[broadphase] final class CellGrid:
   private var keys = new Array[Long](1024)
@@ -15,10 +17,19 @@ private[broadphase] final class CellGrid:
   private var entryShape = new Array[Int](1024)
   private var entryNext = new Array[Int](1024)
   private var entries = 0
+  private var dense = false
+  private var columns, rows = 0
 
-  /** Empties the grid, sized for about `shapes` shapes. */
-  def reset(shapes: Int): Unit =
-    if keys.length < 4 * shapes then resize(Integer.highestOneBit(math.max(4 * shapes, 1024)) * 2)
+  /** Empties the grid, sized for about `shapes` shapes whose cells will lie in the box of
+    * `columns` x `rows` cells from (0, 0), if that is known (0 x 0 if not).
+    */
+  def reset(shapes: Int, columns: Int = 0, rows: Int = 0): Unit =
+    val cells = columns.toDouble * rows
+    dense = columns > 0 && rows > 0 && cells <= CellGrid.DenseCellsPerShape * shapes + CellGrid.DenseCellsAlways
+    this.columns = columns
+    this.rows = rows
+    val needed = if dense then cells.toInt else 4 * shapes
+    if keys.length < needed then resize(Integer.highestOneBit(math.max(needed, 1024)) * 2)
     stamp += 1
     if stamp == Int.MaxValue then
       java.util.Arrays.fill(stamps, 0)
@@ -26,20 +37,30 @@ private[broadphase] final class CellGrid:
     used = 0
     entries = 0
 
+  /** Whether the grid is dense since the last `reset`. */
+  def isDense: Boolean = dense
+
   /** The slot of cell (cx, cy), claimed for it (with an empty chain) if the cell was empty:
     * for `head` and `push`, until the next `open` or `reset`. One probe serves a cell's visit
     * and the insertion after it.
     */
   def open(cx: Int, cy: Int): Int =
-    if 2 * (used + 1) > keys.length then rehash()
-    val key = CellGrid.key(cx, cy)
-    val slot = find(key)
-    if stamps(slot) != stamp then
-      stamps(slot) = stamp
-      keys(slot) = key
-      heads(slot) = -1
-      used += 1
-    slot
+    if dense then
+      val slot = cx * rows + cy
+      if stamps(slot) != stamp then
+        stamps(slot) = stamp
+        heads(slot) = -1
+      slot
+    else
+      if 2 * (used + 1) > keys.length then rehash()
+      val key = CellGrid.key(cx, cy)
+      val slot = find(key)
+      if stamps(slot) != stamp then
+        stamps(slot) = stamp
+        keys(slot) = key
+        heads(slot) = -1
+        used += 1
+      slot
 
   /** First entry of the chain of an `open` slot, or -1 for an empty cell. */
   def head(slot: Int): Int = heads(slot)
@@ -62,8 +83,11 @@ private[broadphase] final class CellGrid:
 
   /** First entry of the cell's chain, or -1 for an empty cell (the cell is not claimed). */
   def firstEntry(cx: Int, cy: Int): Int =
-    val slot = find(CellGrid.key(cx, cy))
-    if stamps(slot) == stamp then heads(slot) else -1
+    val slot =
+      if !dense then find(CellGrid.key(cx, cy))
+      else if cx >= 0 && cx < columns && cy >= 0 && cy < rows then cx * rows + cy
+      else -1
+    if slot >= 0 && stamps(slot) == stamp then heads(slot) else -1
 
   /** Adds shape index `shape` to cell (cx, cy). */
   def insert(cx: Int, cy: Int, shape: Int): Unit = push(open(cx, cy), shape)
@@ -97,6 +121,10 @@ private[broadphase] final class CellGrid:
       i += 1
 
 private object CellGrid:
+  /** A grid is dense when its box has at most this many cells per shape, plus `DenseCellsAlways`. */
+  val DenseCellsPerShape = 4.0
+  val DenseCellsAlways = 4096.0
+
   inline def key(cx: Int, cy: Int): Long = (cx.toLong << 32) | (cy.toLong & 0xffffffffL)
   inline def hash(key: Long): Int =
     val h = key * 0x9e3779b97f4a7c15L

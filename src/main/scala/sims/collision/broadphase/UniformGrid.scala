@@ -150,7 +150,7 @@ private[sims] final class UniformGrid extends Broadphase:
     */
   def findPairs(pairs: PairBuffer, inGridOrder: Boolean): Unit =
     sorted = inGridOrder
-    grid.reset(count)
+    resetGrid()
     val side = _gridSide
     var i = 0
     while i < count do
@@ -324,7 +324,7 @@ private[sims] final class UniformGrid extends Broadphase:
     * last update).
     */
   private def buildGrid(): Unit =
-    grid.reset(count)
+    resetGrid()
     var i = 0
     while i < count do
       if placement(i) == Fine then
@@ -337,6 +337,18 @@ private[sims] final class UniformGrid extends Broadphase:
           cxLong += 1
       i += 1
     gridBuilt = true
+
+  /** Empties the fine grid for this update's shapes: the box of their fine cells counts from
+    * (0, 0), the cell of the lower-left corner of their bounds, to the cell of the upper-right
+    * corner of `fineMinX` ... `fineMaxY`.
+    */
+  private def resetGrid(): Unit =
+    if fineMinX <= fineMaxX then
+      val columns = fineCell(fineMaxX - originX, perFine)
+      val rows = fineCell(fineMaxY - originY, perFine)
+      if columns < Int.MaxValue && rows < Int.MaxValue then grid.reset(count, columns + 1, rows + 1)
+      else grid.reset(count)
+    else grid.reset(count)
 
   /** How many pairs of shapes `findPairs` has tested so far: the work it does (for the tests
     * that the grid stays linear).
