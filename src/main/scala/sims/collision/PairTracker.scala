@@ -108,7 +108,8 @@ private[sims] final class PairTracker(ordered: Boolean):
     !ordered && inWorld(first, (key >>> 32).toInt, world) && inWorld(second, key.toInt, world) &&
       world.enableCollisionDetection && world.enableContactEvents && first.enableContactEvents &&
       second.enableContactEvents && PairFilter.accepts(first, second) &&
-      separation.measure(first, second) && separation.distance <= Defaults.ContactHysteresis
+      (separation.polygonsWithin(first, second, Defaults.ContactHysteresis) ||
+        separation.measure(first, second) && separation.distance <= Defaults.ContactHysteresis)
 
   private def show(): Unit =
     val events = working

@@ -85,3 +85,16 @@ class ShapeSeparationSpec extends AnyFunSuite with Matchers with ScalaCheckPrope
     separation.measure(box(1, 1, 0, 0), user) shouldBe false
     separation.distance shouldBe 3.0 +- 1e-12
   }
+
+  test("polygonsWithin: when it says yes, the polygons are that close; near corners yes, near a side's middle no") {
+    val separation = ShapeSeparation()
+    forAll(pairsOf((x, y) => polygonAt(x, y), (x, y) => polygonAt(x, y), Gen.choose(0.0, 0.02)), Gen.choose(0.001, 0.02),
+      minSuccessful(300)) { case ((a, b), reach) =>
+      if separation.polygonsWithin(a, b, reach) then distance(a, b) should be <= reach + 1e-12
+    }
+    // Two boxes side by side, corners 4 mm apart, and a small box 1 mm from the middle of a big one's side.
+    separation.polygonsWithin(box(0.5, 0.5, 0, 0), box(0.5, 0.5, 1.004, 0), 0.005) shouldBe true
+    separation.polygonsWithin(box(0.5, 0.5, 0, 0), box(0.5, 0.5, 1.006, 0), 0.005) shouldBe false
+    separation.polygonsWithin(box(2, 2, 0, 0), box(0.1, 0.1, 2.101, 0), 0.005) shouldBe false
+    separation.polygonsWithin(box(0.5, 0.5, 0, 0), circle(0.5, 1.001, 0), 0.005) shouldBe false
+  }
