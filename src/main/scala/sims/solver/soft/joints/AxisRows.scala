@@ -53,6 +53,18 @@ private[sims] object AxisRows:
       case Some(m) => m.maxForce * h
       case None => 0.0
 
+  /** The motor's row, if the joint has a motor: its accumulated impulse at `impulse(at)`, `apply`
+    * and `cdot` as for `range`. Inline, as `range` is: no closure in the passes.
+    */
+  inline def drive(motor: Option[JointMotor], mass: Double, inline cdot: Double, maxImpulse: Double,
+      impulse: Array[Double], at: Int, inline apply: Double => Unit): Unit =
+    motor match
+      case Some(m) =>
+        val next = AxisRows.motor(mass, cdot, m.speed, maxImpulse, impulse(at))
+        apply(next - impulse(at))
+        impulse(at) = next
+      case None =>
+
   /** Both ends of `range` on a coordinate at `c` with effective mass `mass`, their accumulated
     * impulses at `impulse(at)` (lower) and `impulse(at + 1)` (upper); `apply` applies a change of
     * impulse along the coordinate's Jacobian, and `cdot` (read again after the lower end's change)

@@ -134,13 +134,8 @@ private[sims] final class PrismaticConstraint(prismatic: PrismaticJoint) extends
           impulse(2))
         slide(bodies, next - impulse(2))
         impulse(2) = next
-      // Matches rather than closures: a closure here would be allocated in every pass.
-      prismatic.motor match
-        case Some(m) =>
-          val next = AxisRows.motor(mass, cdot, m.speed, maxMotorImpulse, impulse(3))
-          slide(bodies, next - impulse(3))
-          impulse(3) = next
-        case None =>
+      AxisRows.drive(prismatic.motor, mass, cdot, maxMotorImpulse, impulse, 3, slide(bodies, _))
+      // A match rather than a closure: a closure here would be allocated in every pass.
       prismatic.limits match
         case Some(range) =>
           AxisRows.range(range, mass, cdot, translation, useBias, context, impulse, 4, slide(bodies, _))

@@ -61,13 +61,8 @@ private[sims] final class RevoluteConstraint(revolute: RevoluteJoint) extends Jo
         val next = AxisRows.spring(axialMass, cdot, theta, springSoftness, impulse(2))
         turn(bodies, next - impulse(2))
         impulse(2) = next
-      // Matches rather than closures: a closure here would be allocated in every pass.
-      revolute.motor match
-        case Some(m) =>
-          val next = AxisRows.motor(axialMass, cdot, m.speed, maxMotorImpulse, impulse(3))
-          turn(bodies, next - impulse(3))
-          impulse(3) = next
-        case None =>
+      AxisRows.drive(revolute.motor, axialMass, cdot, maxMotorImpulse, impulse, 3, turn(bodies, _))
+      // A match rather than a closure: a closure here would be allocated in every pass.
       revolute.limits match
         case Some(range) => AxisRows.range(range, axialMass, cdot, theta, useBias, context, impulse, 4, turn(bodies, _))
         case None =>

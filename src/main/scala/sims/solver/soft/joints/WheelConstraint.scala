@@ -98,16 +98,10 @@ private[sims] final class WheelConstraint(wheel: WheelJoint) extends JointConstr
     val bodies = context.bodies
     val state = bodies.state
     measure(state)
-    // Matches rather than closures: a closure here would be allocated in every pass.
-    wheel.motor match
-      case Some(m) =>
-        val s1 = ends.index1 * Stride
-        val s2 = ends.index2 * Stride
-        val cdot = state(s2 + AngularVelocity) - state(s1 + AngularVelocity)
-        val next = AxisRows.motor(turnMass, cdot, m.speed, maxMotorImpulse, impulse(2))
-        turn(bodies, next - impulse(2))
-        impulse(2) = next
-      case None =>
+    val s1 = ends.index1 * Stride
+    val s2 = ends.index2 * Stride
+    AxisRows.drive(wheel.motor, turnMass, state(s2 + AngularVelocity) - state(s1 + AngularVelocity), maxMotorImpulse,
+      impulse, 2, turn(bodies, _))
     val axial = mass(bodies, slide1, slide2)
     if wheel.spring.nonEmpty then
       val next = AxisRows.spring(axial, speed(state, axisX, axisY, slide1, slide2), along, springSoftness, impulse(1))
