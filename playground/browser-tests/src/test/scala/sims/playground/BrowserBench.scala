@@ -38,8 +38,9 @@ object BrowserBench:
       }
       val errors = chromium.consoleErrors()
       require(errors.isEmpty, s"console errors: ${errors.mkString("; ")}")
+      val clockStep = results("clockStepMillis").asInstanceOf[Number].doubleValue
       val section = markdown(rows, results("warmUpSteps").toString, results("timedSteps").toString,
-        results("userAgent").toString)
+        results("userAgent").toString, clockStep)
       println(section)
       val document = File(args(1)).toPath
       Files.writeString(document, withSection(Files.readString(document), section))
@@ -53,7 +54,8 @@ object BrowserBench:
       val next = document.indexOf("\n## ", start + 1)
       document.substring(0, start + 1) + section + (if next < 0 then "" else document.substring(next))
 
-  private[playground] def markdown(rows: Seq[Row], warmUp: String, timed: String, agent: String): String =
+  private[playground] def markdown(rows: Seq[Row], warmUp: String, timed: String, agent: String,
+      clockStep: Double): String =
     val engines = rows.map(_.engine).distinct
     val scenes = rows.map(_.scene).distinct
     def row(scene: String, engine: String): Option[Row] = rows.find(r => r.scene == scene && r.engine == engine)
@@ -87,7 +89,8 @@ object BrowserBench:
        |taking turns of 10 steps (the order rotating from turn to turn, so that a change in the
        |machine's load falls on all of them alike) and each one's time the median of its turns; planck and
        |matter-js with 10 velocity and 10 position iterations as in the JVM bench, Rapier with its
-       |defaults; sleeping off. The sanity check after the run is the JVM bench's (a pyramid stands,
+       |defaults; sleeping off. The page is cross-origin isolated, so its clock reads in steps of
+       |@clock@ µs (0.1 ms otherwise): a turn's time is that fine. The sanity check after the run is the JVM bench's (a pyramid stands,
        |a chain's joints hold their length within 25%, the balls stay in their pit); a result whose
        |check failed is marked "insane". The machine is shared and noisy: the ratios come from one
        |run and only they compare. Browser: $agent.
@@ -107,5 +110,5 @@ object BrowserBench:
        || scene | engine | sanity | measured |
        ||---|---|---|---|
        |@sanity@
-       |""".stripMargin.replace("@times@", header + body).replace("@ratios@", ratios).replace("@summary@", summary).replace(
+       |""".stripMargin.replace("@times@", header + body).replace("@ratios@", ratios).replace("@summary@", summary).replace("@clock@", f"${clockStep * 1000}%.1f").replace(
       "@sanity@", sanity)

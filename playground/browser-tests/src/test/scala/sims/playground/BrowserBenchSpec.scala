@@ -15,7 +15,7 @@ class BrowserBenchSpec extends AnyFunSuite:
   private val report = BrowserBench.markdown(
     rows(soft = 1.0, planck = 4.0, matter = 2.0, rapier = 0.8, "ballpit-500") ++
       rows(soft = 2.0, planck = 3.0, matter = 1.0, rapier = 1.0, "chain-100"),
-    "100", "200", "a browser")
+    "100", "200", "a browser", clockStep = 0.005)
 
   test("the ratios are SoftStep's time over each peer's, per scene") {
     assert(report.contains("| scene | SiMS SoftStep / planck | SiMS SoftStep / matter-js | SiMS SoftStep / Rapier |"))
@@ -26,6 +26,10 @@ class BrowserBenchSpec extends AnyFunSuite:
   test("the summary names the scenes where an aim is missed") {
     assert(report.contains("In this run SiMS SoftStep is faster than planck on every scene; " +
         "not faster than matter-js on chain-100; not within 1.5 times Rapier on chain-100."))
+  }
+
+  test("the report says how fine the page's clock reads") {
+    assert(report.contains("its clock reads in steps of\n5.0 µs"))
   }
 
   test("the section replaces the old one and keeps the sections after it") {
