@@ -28,6 +28,8 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
     current = false
     normalsCurrent = false
 
+  override private[sims] def refreshCaches(): Unit = refreshNormals()
+
   /** Recomputes world vertices and bounds if the shape moved since the last call. */
   private def refresh(): Unit =
     if !current then

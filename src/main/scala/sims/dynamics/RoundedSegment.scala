@@ -24,6 +24,8 @@ abstract class RoundedSegment private[sims] () extends Shape:
 
   override protected def moved(): Unit = current = false
 
+  override private[sims] def refreshCaches(): Unit = refresh()
+
   private def refresh(): Unit =
     if !current then
       val ux = PortableMath.cos(angle)

@@ -196,6 +196,11 @@ abstract class Shape:
   /** Called after every change of placement; shapes with cached geometry invalidate it. */
   protected def moved(): Unit = ()
 
+  /** Computes the geometry the shape caches for the collision stage now, if it moved since: the
+    * threads of a shared collision stage then only read it.
+    */
+  private[sims] def refreshCaches(): Unit = ()
+
   /** Lowest projection of the shape on the unit axis (ax, ay) (allocation-free). */
   private[sims] def projectMin(ax: Double, ay: Double): Double = project(Vector2D(ax, ay)).lower
   /** Highest projection of the shape on the unit axis (ax, ay). */

@@ -3,7 +3,7 @@ package sims.solver
 import sims.Defaults
 import sims.collision.Contact
 import sims.dynamics.{Checked, World}
-import sims.solver.soft.{ContactConstraints, ContactTouching, SoftBodies, SoftWorkspace}
+import sims.solver.soft.{ContactConstraints, SoftBodies, SoftWorkspace}
 import sims.solver.soft.SoftBodies.*
 
 /** The soft step: substeps, soft constraints, warm starting, relaxation and
@@ -215,7 +215,7 @@ final case class SoftStep(
 
   private def findContacts(world: World, workspace: SoftWorkspace): Unit =
     if world.enableCollisionDetection then
-      workspace.finder.find(world, workspace.table, workspace.bodies, gridSide, maxPairs, speculativeDistance, linearSlop,
+      workspace.finder.find(world, workspace.table, workspace.bodies, pool, gridSide, maxPairs, speculativeDistance, linearSlop,
         contactPersistence)
     else workspace.table.begin()
 
@@ -320,7 +320,7 @@ final case class SoftStep(
     world.guard("soft step substeps", Checked.Velocities)
     world.guard("soft step substeps", Checked.Positions)
     if world.enableContactEvents then
-      ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker)
+      workspace.passes.reportTouching(pool, world.contactTracker)
     workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
     workspace.table.commit()
     workspace.collidedRevision = if world.enableCollisionDetection then world.revision else -1

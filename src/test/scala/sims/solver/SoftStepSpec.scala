@@ -409,15 +409,16 @@ object SoftStepSpec:
 
   // A plate of a user's shape kind and its collision, for the extension test (here, not local
   // to the test: a local class cannot be matched by type).
-  final class Plate(val level: Double) extends Shape:
+  final class Plate(val level: Double, halfWidth: Double = 100) extends Shape:
     val density = 1.0
     val volume = 1.0
     val I = 1.0
-    def AABB = new sims.geometry.AABB(Vector2D(-100, level - 0.1), Vector2D(100, level))
+    def AABB = new sims.geometry.AABB(Vector2D(-halfWidth, level - 0.1), Vector2D(halfWidth, level))
     def project(axis: Vector2D) =
-      val ps = Seq(Vector2D(-100, level), Vector2D(100, level), Vector2D(-100, level - 0.1), Vector2D(100, level - 0.1)).map(_ dot axis)
+      val ps = Seq(Vector2D(-halfWidth, level), Vector2D(halfWidth, level), Vector2D(-halfWidth, level - 0.1),
+        Vector2D(halfWidth, level - 0.1)).map(_ dot axis)
       Projection(axis, ps.min, ps.max)
-    def contains(point: Vector2D) = point.y <= level && point.y >= level - 0.1
+    def contains(point: Vector2D) = point.y <= level && point.y >= level - 0.1 && math.abs(point.x) <= halfWidth
   final class PlateCollision(plate: Plate, circle: Circle) extends Collision:
     val shape1: Shape = plate
     val shape2: Shape = circle

@@ -4,7 +4,10 @@ import java.lang.management.ManagementFactory
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import scala.jdk.CollectionConverters.*
-import sims.dynamics.World
+import sims.collision.GridDetector
+import sims.dynamics.{Circle, World}
+import sims.geometry.Vector2D
+import sims.solver.SoftStepSpec.{Plate, PlateCollision}
 import sims.scenes.{BenchScenes, StateFingerprint}
 
 /** The soft step's workers: the same bits for any number of them, no thread for one, nothing
@@ -54,6 +57,43 @@ class SoftStepWorkersSpec extends AnyFunSuite with Matchers:
     val before = allocated
     for _ <- 1 to 200 do world.step()
     (allocated - before) / 200.0 should be < 1024.0
+  }
+
+  test("a pile with a pair of the user's kinds: the same bits under 1 and 2 workers, the user's methods on the stepping thread") {
+    val callers = java.util.concurrent.ConcurrentHashMap.newKeySet[Thread]()
+    def pile(workers: Int): World =
+      val world = BenchScenes.find("ballpit-4000").get.build().world
+      world.enableSleep = false
+      world.solver = SoftStep(workers = workers)
+      val detector = world.detector.asInstanceOf[GridDetector]
+      detector.detectionMethods += { case (c: Circle, p: Plate) =>
+        callers.add(Thread.currentThread)
+        c.pos.y - c.radius <= p.level && math.abs(c.pos.x) <= 1
+      }
+      detector.collisionMethods += { case (c: Circle, p: Plate) => PlateCollision(p, c) }
+      // Among the balls of the pile (as it starts), so that pairs with the plate come and go.
+      val balls = world.shapes.collect { case c: Circle => c.pos.y }
+      val plate = Plate(balls.sum / balls.size, halfWidth = 1).asBody
+      plate.fixed = true
+      world += plate
+      for _ <- 1 to 30 do world.step()
+      world
+    val one = StateFingerprint(pile(1))
+    callers.asScala.toSet shouldBe Set(Thread.currentThread)
+    StateFingerprint(pile(2)) shouldBe one
+    callers.asScala.toSet shouldBe Set(Thread.currentThread)
+  }
+
+  test("two bodies too fast to compute with: under 2 workers the same error as under one, the first pair's") {
+    def failure(workers: Int): ArithmeticException =
+      val world = stepped("ballpit-4000", 2, workers)
+      val balls = world.bodies.filterNot(_.fixed)
+      // One early in the world's order and one late: their pairs fall in different ranges.
+      for ball <- Seq(balls(balls.size / 8), balls(7 * balls.size / 8)) do ball.linearVelocity = Vector2D(1e160, 0)
+      intercept[ArithmeticException](world.step())
+    val one = failure(1)
+    one.getMessage should include("approach bound")
+    failure(2).getMessage shouldBe one.getMessage
   }
 
   test("workers must be at least 1, named in the error") {

@@ -35,17 +35,19 @@ private[sims] final class ContactTable:
 
   /** The committed contact of the shape pair `key`, or -1. */
   def lastOf(key: Long): Int =
-    val g = guess
-    if guessing && g < committed.count && committed.keys(g) == key then
-      guess = g + 1
-      g
+    val last = lastOf(key, guess)
+    if last >= 0 then guess = last + 1
+    last
+
+  /** The committed contact of the shape pair `key`, or -1, trying committed contact `guess`
+    * first (the one after the caller's last find, usually). Reads only: callers on several
+    * threads keep guesses of their own.
+    */
+  def lastOf(key: Long, guess: Int): Int =
+    if guessing && guess < committed.count && committed.keys(guess) == key then guess
     else
       val slot = index.find(key)
-      if slot < 0 then -1
-      else
-        val c = index.stampAt(slot).toInt
-        guess = c + 1
-        c
+      if slot < 0 then -1 else index.stampAt(slot).toInt
 
   /** Makes this step's contacts the last step's. */
   def commit(): Unit =
@@ -175,6 +177,32 @@ private[sims] final class Contacts:
     hotSize += size
     count += 1
     count - 1
+
+  /** Counts `more` contacts of `moreHot` hot doubles as added after the present ones, their
+    * records to be filled by `place`.
+    */
+  def extend(more: Int, moreHot: Int): Unit =
+    if count + more > keys.length then grow(2 * (count + more))
+    if hotSize + moreHot > hot.length then hot = java.util.Arrays.copyOf(hot, 2 * (hotSize + moreHot))
+    count += more
+    hotSize += moreHot
+
+  /** Copies every contact of `from` (but its `bouncing`) to contacts `base` on, their hot blocks
+    * to `hotBase` on: room made by `extend`. Writes only those contacts' slots, so that the
+    * copies of several generations into one may run at once.
+    */
+  def place(from: Contacts, base: Int, hotBase: Int): Unit =
+    val n = from.count
+    System.arraycopy(from.shapeA, 0, shapeA, base, n); System.arraycopy(from.shapeB, 0, shapeB, base, n)
+    System.arraycopy(from.bodyA, 0, bodyA, base, n); System.arraycopy(from.bodyB, 0, bodyB, base, n)
+    System.arraycopy(from.keys, 0, keys, base, n); System.arraycopy(from.pointCount, 0, pointCount, base, n)
+    System.arraycopy(from.ids, 0, ids, 2 * base, 2 * n); System.arraycopy(from.side, 0, side, base, n)
+    System.arraycopy(from.cold, 0, cold, base * ColdStride, n * ColdStride)
+    System.arraycopy(from.hot, 0, hot, hotBase, from.hotSize)
+    var c = 0
+    while c < n do
+      offset(base + c) = from.offset(c) + hotBase
+      c += 1
 
   /** Forgets every contact. */
   def clear(): Unit =

@@ -16,13 +16,20 @@ import sims.solver.soft.SoftBodies.*
   * the point pushed, the impact's) and the normal impulse its points applied over the step.
   */
 private[sims] object ContactTouching:
+  /** Doubles per contact in `measure`'s sums. */
+  inline val SumStride = 4
 
-  /** Reports the touching contacts of `contacts` (this step's, after restitution) to `tracker`. */
-  def report(contacts: Contacts, bodies: SoftBodies, tracker: PairTracker): Unit =
+  /** Measures contacts `from until until` of `contacts` (this step's, after restitution): per
+    * contact c, its touching points in `points(c)` and, at `SumStride * c` in `sums`, the sums of
+    * their x and y, their fastest approach and the contact's normal impulse. Writes only those
+    * contacts' slots: ranges of contacts may be measured at once.
+    */
+  def measure(contacts: Contacts, bodies: SoftBodies, points: Array[Int], sums: Array[Double], from: Int,
+      until: Int): Unit =
     val hot = contacts.hot
     val state = bodies.state
-    var c = 0
-    while c < contacts.count do
+    var c = from
+    while c < until do
       val a = contacts.bodyA(c)
       val b = contacts.bodyB(c)
       val sA = a * SoftBodies.Stride
@@ -54,6 +61,22 @@ private[sims] object ContactTouching:
           fastest = math.max(fastest, -hot(q + RelativeVelocity))
         impulse += pushed
         p += 1
+      points(c) = touching
+      val t = SumStride * c
+      sums(t) = sumX; sums(t + 1) = sumY; sums(t + 2) = fastest; sums(t + 3) = impulse
+      c += 1
+
+  /** Reports the touching contacts of `contacts`, as `measure` found them, to `tracker`, in
+    * contact order.
+    */
+  def report(contacts: Contacts, tracker: PairTracker, points: Array[Int], sums: Array[Double]): Unit =
+    val hot = contacts.hot
+    var c = 0
+    while c < contacts.count do
+      val touching = points(c)
       if touching > 0 && tracker.touch(contacts.shapeA(c), contacts.shapeB(c)) then
-        tracker.describe(nx, ny, sumX / touching, sumY / touching, fastest, impulse)
+        val k = contacts.offset(c)
+        val t = SumStride * c
+        tracker.describe(hot(k + NormalX), hot(k + NormalY), sums(t) / touching, sums(t + 1) / touching, sums(t + 2),
+          sums(t + 3))
       c += 1

@@ -39,6 +39,14 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
 
   private val positionsTask: Workers.Task = index => integratePositions(from(index), from(index + 1))
 
+  // Per contact: its touching points, and its sums for the contact events (see ContactTouching).
+  private var touchingPoints = new Array[Int](0)
+  private var touchingSums = new Array[Double](0)
+
+  private val touchingTask: Workers.Task = index =>
+    ContactTouching.measure(workspace.table.current, workspace.bodies, touchingPoints, touchingSums, from(index),
+      from(index + 1))
+
   /** Prepares this step's contacts (inverse masses, effective masses, softness), then cuts them
     * into blocks, under gravity `(gx, gy)`.
     */
@@ -64,6 +72,18 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     this.gy = gy
     this.h = h
     inRanges(workers, workspace.bodies.count, velocitiesTask)
+
+  /** Reports this step's touching contacts to `tracker` (see [[ContactTouching]]): measured in
+    * ranges, reported in contact order. (Measured by the workers, the contacts' blocks come from
+    * the caches of the cores that solved them in parallel, not one by one to the caller's.)
+    */
+  def reportTouching(workers: Workers, tracker: sims.collision.PairTracker): Unit =
+    val contacts = workspace.table.current
+    if touchingPoints.length < contacts.count then
+      touchingPoints = new Array[Int](2 * contacts.count)
+      touchingSums = new Array[Double](2 * ContactTouching.SumStride * contacts.count)
+    inRanges(workers, contacts.count, touchingTask)
+    ContactTouching.report(contacts, tracker, touchingPoints, touchingSums)
 
   /** Every body's placement over a substep h (see `integratePositions` below). */
   def integratePositions(workers: Workers, h: Double): Unit =

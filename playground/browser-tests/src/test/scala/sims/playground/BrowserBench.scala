@@ -110,5 +110,6 @@ object BrowserBench:
        || scene | engine | sanity | measured |
        ||---|---|---|---|
        |@sanity@
-       |""".stripMargin.replace("@times@", header + body).replace("@ratios@", ratios).replace("@summary@", summary).replace("@clock@", f"${clockStep * 1000}%.1f").replace(
+       |""".stripMargin.replace("@times@", header + body).replace("@ratios@", ratios).replace("@summary@", summary).replace(
+      "@clock@", f"${clockStep * 1000}%.1f").replace(
       "@sanity@", sanity)

@@ -1,0 +1,432 @@
+package sims.solver.soft
+
+import sims.collision.{Collision, PairKey}
+import sims.collision.manifold.Manifold
+import sims.collision.narrowphase.{Narrowphase, PairKind}
+import sims.dynamics.{Circle, Shape, World}
+import sims.geometry.PortableMath
+import sims.solver.ShortCopy
+import sims.solver.soft.ContactTable.*
+import sims.solver.soft.SoftBodies.*
+
+/** Collides pairs of shapes into a generation of contacts (`target`): each pair's manifold, or
+  * the last step's kept (see `keeps`), warm started from the pair's contact of the last step.
+  * The collision stage has one for its own thread and one per range of pairs when workers
+  * share the pairs out: each has its own scratch, its own guess of the next last-step contact
+  * and its own contacts, and reads the rest (bodies, shapes, the last step's contacts) only.
+  */
+private[sims] final class PairCollider:
+  /** Where this step's contacts go. */
+  var target: Contacts = null
+  /** Whether a collider of a shared range met a pair of a user's kinds (user code need not be
+    * safe to call from several threads): it stops there, and the stage collides the step's
+    * pairs on its own thread instead.
+    */
+  var metGeneral: Boolean = false
+  private val manifold = Manifold()
+  private var world: World = null
+  private var table: ContactTable = null
+  private var bodies: SoftBodies = null
+  private var timeStep, speculativeDistance, linearSlop, persistence = 0.0
+  private var shared = false
+  // The last-step contact to try first for the next pair (see `ContactTable.lastOf`).
+  private var guess = 0
+  // The narrowphase's methods for the last few pairs of shape classes, so that a shared range
+  // takes the narrowphase's lock only for a class pair new to it.
+  private val recentClass1, recentClass2 = new Array[Class[?]](PairCollider.RecentSize)
+  private val recent = new Array[Narrowphase.Resolved](PairCollider.RecentSize)
+  private var recentNext = 0
+
+  /** Starts a step: contacts of `world`'s pairs into `target`, warm started from `table`'s
+    * committed ones; `shared` when other colliders run at the same time.
+    */
+  def begin(world: World, table: ContactTable, bodies: SoftBodies, target: Contacts, speculativeDistance: Double,
+      linearSlop: Double, persistence: Double, shared: Boolean): Unit =
+    this.world = world
+    this.table = table
+    this.bodies = bodies
+    this.target = target
+    this.speculativeDistance = speculativeDistance
+    this.linearSlop = linearSlop
+    this.persistence = persistence
+    this.shared = shared
+    timeStep = world.timeStep
+    metGeneral = false
+    guess = 0
+
+  /** The last step's contact of the pair `key`, or -1. */
+  def lastOf(key: Long): Int =
+    val last = table.lastOf(key, guess)
+    if last >= 0 then guess = last + 1
+    last
+
+  // The narrowphase's methods for (a, b): its own cache on this collider's thread, else the
+  // narrowphase's, under its lock when shared.
+  private def resolve(a: Shape, b: Shape): Narrowphase.Resolved =
+    val narrowphase = world.collisionPipeline.narrowphase
+    if !shared then narrowphase.resolve(a, b)
+    else
+      val c1 = a.shapeClass
+      val c2 = b.shapeClass
+      var k = 0
+      while k < PairCollider.RecentSize && !((recentClass1(k) eq c1) && (recentClass2(k) eq c2)) do k += 1
+      if k < PairCollider.RecentSize then recent(k)
+      else
+        val resolved = narrowphase.synchronized(narrowphase.resolve(a, b))
+        recentClass1(recentNext) = c1
+        recentClass2(recentNext) = c2
+        recent(recentNext) = resolved
+        recentNext = (recentNext + 1) % PairCollider.RecentSize
+        resolved
+
+  /** Collides the pair (a, b): its manifold (or the last step's, kept), as a contact of this step. */
+  def collide(a: Shape, b: Shape): Unit =
+    val methods = resolve(a, b)
+    val functions = methods.functions
+    if functions == null && shared then
+      metGeneral = true
+      return
+    val key = PairKey.of(a, b)
+    val last = lastOf(key)
+    // For every pair, kept or not: it also refuses speeds too large to compute with.
+    val approach = approachBound(a.body.index, b.body.index)
+    if functions == null then
+      val collision = world.collisionPipeline.narrowphase.collideGeneral(methods, a, b)
+      if collision != null then addCollision(collision, key, last)
+    else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
+      keeps(table.committed, last, a, b) then
+      keep(last, a, b, key)
+    else
+      functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
+        speculativeDistance + timeStep * approach, linearSlop, manifold)
+      if manifold.pointCount > 0 then
+        addManifold(a, b, key, last)
+        if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
+          aimAtImpact(target, target.count - 1, a.asInstanceOf[Circle], b.asInstanceOf[Circle])
+
+  /** Whether shapes a and b touch as the soft step counts it: their manifold has a point. */
+  def touches(a: Shape, b: Shape): Boolean =
+    val narrowphase = world.collisionPipeline.narrowphase
+    val methods = resolve(a, b)
+    val approach = approachBound(a.body.index, b.body.index)
+    val functions = methods.functions
+    if functions == null then narrowphase.collideGeneral(methods, a, b) != null
+    else
+      functions.manifold(a, b, -1, speculativeDistance + timeStep * approach, linearSlop, manifold)
+      manifold.pointCount > 0
+
+  /** Appends the last step's contact `last` of a pair asleep as it is (its bodies' indices as
+    * they are now): its impulses warm start the pair when its island wakes.
+    */
+  def carry(last: Int, a: Shape, b: Shape, key: Long): Unit =
+    val old = table.committed
+    val contacts = target
+    val points = old.pointCount(last)
+    val k = old.offset(last)
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0)
+    contacts.side(c) = old.side(last)
+    ShortCopy.doubles(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
+    ShortCopy.doubles(old.cold, last * ColdStride, contacts.cold, c * ColdStride, ColdStride)
+    contacts.ids(2 * c) = old.ids(2 * last)
+    contacts.ids(2 * c + 1) = old.ids(2 * last + 1)
+
+  /** An upper bound of how fast two bodies' points can approach each other at the start of
+    * the step: |vA - vB| + |wA| extentA + |wB| extentB. Over the step they close at most this
+    * times the time step, so points that far apart are speculative points: a fast ball is
+    * caught where it would land instead of sinking deep into a pile within one step (and being
+    * pushed out of it at speed).
+    */
+  private def approachBound(a: Int, b: Int): Double =
+    val state = bodies.state
+    val sA = a * SoftBodies.Stride
+    val sB = b * SoftBodies.Stride
+    val dvx = state(sB + VelocityX) - state(sA + VelocityX)
+    val dvy = state(sB + VelocityY) - state(sA + VelocityY)
+    val bound = math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + AngularVelocity)) * bodies.bodies(a).extent +
+      math.abs(state(sB + AngularVelocity)) * bodies.bodies(b).extent
+    // Its square overflows from 1.3e154 m/s on: speeds at which the contacts' products (a
+    // speed times an arm, a mass, an inverse inertia) overflow or lose all meaning.
+    if !java.lang.Double.isFinite(bound * bound) then overflow(a, b, bound)
+    bound
+
+  /** A pair approaching too fast to compute with (a finite velocity near Double.MaxValue: the
+    * step would carry on with positions of 1e306 m, or spread NaN to the other body): an error
+    * naming the faster body. The world restores its state before the step and names the stage.
+    */
+  private def overflow(a: Int, b: Int, bound: Double): Nothing =
+    // The bodies still hold their velocities of the start of the step.
+    def speed(i: Int): Double =
+      val body = bodies.bodies(i)
+      math.abs(body.vx) + math.abs(body.vy) + math.abs(body.w) * body.extent
+    val (fast, other) = if speed(a) >= speed(b) then (a, b) else (b, a)
+    val body = bodies.bodies(fast)
+    throw ArithmeticException(s"the speed of body $fast ($body: velocity ${body.linearVelocity}, angular velocity " +
+      s"${body.angularVelocity}) is too large to compute its pair with body $other (approach bound $bound m/s)")
+
+  /** Appends the manifold of shapes (a, b) as a contact, warm started from the last step's
+    * contact `last` (or -1) point by point through the feature ids.
+    */
+  private def addManifold(a: Shape, b: Shape, key: Long, last: Int): Unit =
+    val contacts = target
+    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount, stiffnessOf(last))
+    contacts.side(c) = manifold.polygonSide
+    cachePlacements(contacts, c)
+    val hot = contacts.hot
+    val cold = contacts.cold
+    var p = 0
+    while p < manifold.pointCount do
+      setPoint(contacts, c, p, manifold.x(p), manifold.y(p), manifold.separation(p))
+      val q = contacts.hotPoint(c, p)
+      val r = contacts.coldPoint(c, p)
+      cold(r + CachedAnchorAX) = hot(q + AnchorAX); cold(r + CachedAnchorAY) = hot(q + AnchorAY)
+      cold(r + CachedAnchorBX) = hot(q + AnchorBX); cold(r + CachedAnchorBY) = hot(q + AnchorBY)
+      cold(r + CachedSeparation) = manifold.separation(p)
+      contacts.ids(2 * c + p) = manifold.id(p)
+      if last >= 0 then
+        val old = table.committed
+        var o = 0
+        while o < old.pointCount(last) do
+          if old.ids(2 * last + o) == manifold.id(p) then
+            val from = old.hotPoint(last, o)
+            hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
+            hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
+          o += 1
+      p += 1
+
+  /** Turns contact c of two circles on their bodies' centres to the normal they meet along:
+    * the line of their centres when, moving as at the start of the step, they first touch,
+    * or when they come closest within the step if they pass each other (the start's when they
+    * touch already). Its arms then lie along that normal, from each centre to the outline, and its
+    * separation is the gap along it.
+    *
+    * Why: the contact keeps its normal for the whole step, and a contact found before the balls
+    * touch (speculative, up to a step ahead) has the line of centres of the start, which for two
+    * balls glancing past each other is far from the line at impact: the impulses then push
+    * along a line that misses the centres at impact (a couple that changes the angular
+    * momentum, and a rebound in the wrong direction), and the gap along the start's normal
+    * closes before the balls touch. Along the line at impact the collision is as between real
+    * balls; along the line of closest approach the gap never closes early.
+    */
+  private def aimAtImpact(contacts: Contacts, c: Int, circleA: Circle, circleB: Circle): Unit =
+    val a = contacts.bodyA(c)
+    val b = contacts.bodyB(c)
+    val dx = bodies.startX(b) - bodies.startX(a)
+    val dy = bodies.startY(b) - bodies.startY(a)
+    val sA = a * Stride; val sB = b * Stride
+    val vx = bodies.state(sB + VelocityX) - bodies.state(sA + VelocityX)
+    val vy = bodies.state(sB + VelocityY) - bodies.state(sA + VelocityY)
+    val reach = circleA.radius + circleB.radius
+    // |d + t v| = reach: speed2 t^2 + 2 half t + gap = 0.
+    val speed2 = vx * vx + vy * vy
+    val half = dx * vx + dy * vy
+    val gap = dx * dx + dy * dy - reach * reach
+    if gap > 0 && half < 0 then // apart and approaching
+      val discriminant = half * half - speed2 * gap
+      // The impact, however far ahead (then the gap along its line stays open all step, and a
+      // push at the step's end, which a contact about to close makes, bounces along it), or
+      // the closest approach within the step for balls that pass each other.
+      val t = if discriminant >= 0 then (-half - math.sqrt(discriminant)) / speed2 else math.min(-half / speed2, timeStep)
+      val hot = contacts.hot
+      val k = contacts.offset(c)
+      val ix = dx + t * vx; val iy = dy + t * vy
+      val length = math.sqrt(ix * ix + iy * iy)
+      val nx = ix / length; val ny = iy / length
+      val cold = contacts.cold
+      hot(k + NormalX) = nx; hot(k + NormalY) = ny
+      val q = contacts.hotPoint(c, 0)
+      val r = contacts.coldPoint(c, 0)
+      hot(q + AnchorAX) = circleA.radius * nx; hot(q + AnchorAY) = circleA.radius * ny
+      hot(q + AnchorBX) = -circleB.radius * nx; hot(q + AnchorBY) = -circleB.radius * ny
+      cold(r + CachedAnchorAX) = hot(q + AnchorAX); cold(r + CachedAnchorAY) = hot(q + AnchorAY)
+      cold(r + CachedAnchorBX) = hot(q + AnchorBX); cold(r + CachedAnchorBY) = hot(q + AnchorBY)
+      cold(r + PointX) = bodies.startX(a) + hot(q + AnchorAX)
+      cold(r + PointY) = bodies.startY(a) + hot(q + AnchorAY)
+      val separation = dx * nx + dy * ny - reach
+      cold(r + Separation) = separation
+      cold(r + CachedSeparation) = separation
+
+  /** Whether the last step's contact `last` may be kept instead of computing the manifold
+    * again: neither body turned by more than `KeepAngle` since it was computed, and the bodies'
+    * relative placement changed by less than `persistence` (a shift of B in A's frame plus
+    * the largest extent times the change of their relative rotation).
+    */
+  private def keeps(old: Contacts, last: Int, shapeA: Shape, shapeB: Shape): Boolean =
+    val a = shapeA.body.index
+    val b = shapeB.body.index
+    val k = last * ColdStride
+    val turnA = bodies.startAngle(a) - old.cold(k + CachedAngleA)
+    val turnB = bodies.startAngle(b) - old.cold(k + CachedAngleB)
+    if math.abs(turnA) >= PairCollider.KeepAngle || math.abs(turnB) >= PairCollider.KeepAngle then false
+    else
+      // B's centre in A's frame now against then, measured in A's frame then:
+      // R(-turnA) (cB - cA) - (cB - cA) then.
+      val dx = bodies.startX(b) - bodies.startX(a)
+      val dy = bodies.startY(b) - bodies.startY(a)
+      val c = PairCollider.cosine(turnA)
+      val s = PairCollider.sine(turnA)
+      val relativeX = c * dx + s * dy - old.cold(k + CachedRelativeX)
+      val relativeY = -s * dx + c * dy - old.cold(k + CachedRelativeY)
+      val extentA = if bodies.bodies(a).fixed then 0.0 else bodies.bodies(a).extent
+      val extentB = if bodies.bodies(b).fixed then 0.0 else bodies.bodies(b).extent
+      val shift = math.sqrt(relativeX * relativeX + relativeY * relativeY)
+      shift + math.max(extentA, extentB) * math.abs(PairCollider.sine(turnB - turnA)) < persistence
+
+  /** Appends the last step's contact `last` again: the same normal, ids and impulses, its
+    * separations updated from the bodies' motion.
+    */
+  private def keep(last: Int, a: Shape, b: Shape, key: Long): Unit =
+    val old = table.committed
+    val contacts = target
+    val points = old.pointCount(last)
+    val k = old.offset(last)
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, old.hot(k + Stiffness))
+    contacts.side(c) = old.side(last)
+    val hot = contacts.hot
+    val cold = contacts.cold
+    val oldCold = last * ColdStride
+    ShortCopy.doubles(old.cold, oldCold, cold, c * ColdStride, ColdStride)
+    val ia = contacts.bodyA(c)
+    val ib = contacts.bodyB(c)
+    val turnA = bodies.startAngle(ia) - old.cold(oldCold + CachedAngleA)
+    val turnB = bodies.startAngle(ib) - old.cold(oldCold + CachedAngleB)
+    val cA = PairCollider.cosine(turnA); val sA = PairCollider.sine(turnA)
+    val cB = PairCollider.cosine(turnB); val sB = PairCollider.sine(turnB)
+    val nx = old.hot(k + NormalX); val ny = old.hot(k + NormalY)
+    var p = 0
+    while p < points do
+      val from = old.hotPoint(last, p)
+      val q = contacts.hotPoint(c, p)
+      val r = contacts.coldPoint(c, p)
+      contacts.ids(2 * c + p) = old.ids(2 * last + p)
+      hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
+      hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
+      val anchorAX = cold(r + CachedAnchorAX); val anchorAY = cold(r + CachedAnchorAY)
+      val anchorBX = cold(r + CachedAnchorBX); val anchorBY = cold(r + CachedAnchorBY)
+      // The impulses act where the manifold put them (its anchors), not turned: the manifold
+      // is kept whole, arms and normal as computed. Turning the arms but not the normal couples
+      // them wrongly (measured: a 12-box stack then leans and falls within 10 s; so does acting
+      // at the middle of the two anchor points). The price: once the anchor points have slid
+      // apart along the surface, the two impulses form a small couple, and angular momentum is
+      // no longer exact (measured: 4e-4 of it over 2 s in a tumbling free pair).
+      hot(q + AnchorAX) = anchorAX; hot(q + AnchorAY) = anchorAY
+      hot(q + AnchorBX) = anchorBX; hot(q + AnchorBY) = anchorBY
+      // The two anchor points coincided when the manifold was computed; their gap along n
+      // since then, with the arms turned with their bodies, changes the separation.
+      val rAx = cA * anchorAX - sA * anchorAY
+      val rAy = sA * anchorAX + cA * anchorAY
+      val rBx = cB * anchorBX - sB * anchorBY
+      val rBy = sB * anchorBX + cB * anchorBY
+      val gapX = bodies.startX(ib) + rBx - bodies.startX(ia) - rAx
+      val gapY = bodies.startY(ib) + rBy - bodies.startY(ia) - rAy
+      cold(r + Separation) = cold(r + CachedSeparation) + gapX * nx + gapY * ny
+      cold(r + PointX) = bodies.startX(ia) + rAx
+      cold(r + PointY) = bodies.startY(ia) + rAy
+      p += 1
+
+  /** Sets point p of contact c at (x, y) with separation s: anchors from the bodies' centres,
+    * no impulses yet.
+    */
+  private def setPoint(contacts: Contacts, c: Int, p: Int, x: Double, y: Double, separation: Double): Unit =
+    val q = contacts.hotPoint(c, p)
+    val r = contacts.coldPoint(c, p)
+    val a = contacts.bodyA(c)
+    val b = contacts.bodyB(c)
+    val hot = contacts.hot
+    hot(q + AnchorAX) = x - bodies.startX(a); hot(q + AnchorAY) = y - bodies.startY(a)
+    hot(q + AnchorBX) = x - bodies.startX(b); hot(q + AnchorBY) = y - bodies.startY(b)
+    hot(q + NormalImpulse) = 0
+    hot(q + TangentImpulse) = 0
+    contacts.cold(r + PointX) = x
+    contacts.cold(r + PointY) = y
+    contacts.cold(r + Separation) = separation
+
+  /** Records the bodies' placements of contact c, at which its manifold was computed. */
+  private def cachePlacements(contacts: Contacts, c: Int): Unit =
+    val a = contacts.bodyA(c)
+    val b = contacts.bodyB(c)
+    val k = c * ColdStride
+    contacts.cold(k + CachedAngleA) = bodies.startAngle(a)
+    contacts.cold(k + CachedAngleB) = bodies.startAngle(b)
+    // cB - cA in the world frame; `keeps` turns the current one back by A's turn since.
+    contacts.cold(k + CachedRelativeX) = bodies.startX(b) - bodies.startX(a)
+    contacts.cold(k + CachedRelativeY) = bodies.startY(b) - bodies.startY(a)
+
+  /** Appends a collision of a user kind as a contact: its normal and (at most two of) its
+    * points, warm started from the last step's points within `UserMatchDistance`.
+    */
+  def addCollision(collision: Collision, key: Long, last: Int): Unit =
+    collision.load()
+    val count = math.min(collision.pointCount, 2)
+    if count > 0 then
+      val contacts = target
+      val nx = collision.normalX
+      val ny = collision.normalY
+      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count, stiffnessOf(last))
+      contacts.side(c) = -1
+      val separation = -Collision.overlapAlong(collision.shape1, collision.shape2, nx, ny)
+      var p = 0
+      while p < count do
+        val x = collision.pointX(p)
+        val y = collision.pointY(p)
+        setPoint(contacts, c, p, x, y, separation)
+        contacts.ids(2 * c + p) = p
+        if last >= 0 then
+          val old = table.committed
+          var o = 0
+          while o < old.pointCount(last) do
+            val r = old.coldPoint(last, o)
+            val dx = old.cold(r + PointX) - x
+            val dy = old.cold(r + PointY) - y
+            if dx * dx + dy * dy <= PairCollider.UserMatchDistance * PairCollider.UserMatchDistance then
+              val from = old.hotPoint(last, o)
+              val q = contacts.hotPoint(c, p)
+              contacts.hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
+              contacts.hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
+            o += 1
+        p += 1
+
+  /** Starts contact of shapes (a, b) with normal (nx, ny) from a to b and `points` points: its
+    * bodies, key and the pair's friction and restitution (products of the shapes', as in the
+    * classic step).
+    */
+  private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double, points: Int,
+      stiffness: Double): Int =
+    val c = contacts.add(points)
+    contacts.shapeA(c) = a
+    contacts.shapeB(c) = b
+    contacts.bodyA(c) = a.body.index
+    contacts.bodyB(c) = b.body.index
+    contacts.keys(c) = key
+    val k = contacts.offset(c)
+    contacts.hot(k + NormalX) = nx
+    contacts.hot(k + NormalY) = ny
+    contacts.hot(k + Friction) = a.friction * b.friction
+    val restitution = a.restitution * b.restitution
+    contacts.hot(k + Restitution) = restitution
+    if restitution != 0 then contacts.bouncing = true
+    contacts.hot(k + Stiffness) = stiffness
+    c
+
+  /** The stiffness the last step's contact `last` of the pair had (0 if none: see [[ContactStiffness]]). */
+  private def stiffnessOf(last: Int): Double =
+    if last >= 0 then table.committed.hot(table.committed.offset(last) + Stiffness) else 0.0
+
+private[sims] object PairCollider:
+  /** Class pairs a shared collider remembers. */
+  inline val RecentSize = 4
+
+  /** A user kind's point takes over the impulses of a last-step point this close, m. */
+  val UserMatchDistance: Double = 0.01
+
+  /** A contact is computed again once either body turned this far since, rad (cos = 0.98). */
+  val KeepAngle: Double = PortableMath.acos(0.98)
+
+  /** sin(a) for |a| < KeepAngle, to 1e-9, without the library call (Taylor to a^5). */
+  inline def sine(a: Double): Double =
+    val a2 = a * a
+    a * (1 - a2 / 6 * (1 - a2 / 20))
+
+  /** cos(a) for |a| < KeepAngle, to 1e-10 (Taylor to a^6). */
+  inline def cosine(a: Double): Double =
+    val a2 = a * a
+    1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30))
