@@ -9,6 +9,9 @@ import sims.dynamics.Shape
   */
 private[sims] final class PairBuffer:
   private var slots = new Array[PairSlot](64)
+  // The pairs' shapes, as in their slots, in arrays of their own: the soft step reads them for
+  // every pair without going through the slot objects.
+  private var firsts, seconds = new Array[Shape](64)
   private var count = 0
   private var made = 0
 
@@ -25,9 +28,9 @@ private[sims] final class PairBuffer:
   /** The slot of pair i. */
   def slot(i: Int): PairSlot = slots(i)
   /** The first shape of pair i. */
-  def first(i: Int): Shape = slots(i).first
+  def first(i: Int): Shape = firsts(i)
   /** The second shape of pair i. */
-  def second(i: Int): Shape = slots(i).second
+  def second(i: Int): Shape = seconds(i)
   /** Forgets the pairs (the slots stay for reuse). */
   def clear(): Unit = count = 0
 
@@ -37,7 +40,10 @@ private[sims] final class PairBuffer:
       throw IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
         s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
         "has that many overlapping bounds")
-    if count == slots.length then slots = java.util.Arrays.copyOf(slots, count * 2)
+    if count == slots.length then
+      slots = java.util.Arrays.copyOf(slots, count * 2)
+      firsts = java.util.Arrays.copyOf(firsts, count * 2)
+      seconds = java.util.Arrays.copyOf(seconds, count * 2)
     var s = slots(count)
     if s == null then
       s = PairSlot()
@@ -45,4 +51,6 @@ private[sims] final class PairBuffer:
       made += 1
     s.first = a
     s.second = b
+    firsts(count) = a
+    seconds(count) = b
     count += 1
