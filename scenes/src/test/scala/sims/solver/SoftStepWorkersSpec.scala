@@ -84,6 +84,16 @@ class SoftStepWorkersSpec extends AnyFunSuite with Matchers:
     callers.asScala.toSet shouldBe Set(Thread.currentThread)
   }
 
+  test("methods the user changes between steps are used from the next step on, under 2 workers as under 1") {
+    def changed(workers: Int): World =
+      val world = stepped("ballpit-4000", 2, workers)
+      // Circles now pass through each other: the built-in methods for them are no longer chosen.
+      world.detector.asInstanceOf[GridDetector].detectionMethods.prepend { case (_: Circle, _: Circle) => false }
+      for _ <- 1 to 5 do world.step()
+      world
+    StateFingerprint(changed(2)) shouldBe StateFingerprint(changed(1))
+  }
+
   test("two bodies too fast to compute with: under 2 workers the same error as under one, the first pair's") {
     def failure(workers: Int): ArithmeticException =
       val world = stepped("ballpit-4000", 2, workers)

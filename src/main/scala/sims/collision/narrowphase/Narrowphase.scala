@@ -24,12 +24,8 @@ private[sims] final class Narrowphase:
   private var detectionSnapshot = Array.empty[AnyRef]
   private var collisionSnapshot = Array.empty[AnyRef]
   private val table = java.util.HashMap[(Class[?], Class[?]), Resolved]()
-  // A few recent class pairs, searched by identity before the map: scenes have a handful of
-  // class pairs, looked up for every candidate pair, and the map's key would be a new tuple.
-  private val recentClass1 = new Array[Class[?]](RecentSize)
-  private val recentClass2 = new Array[Class[?]](RecentSize)
-  private val recent = new Array[Resolved](RecentSize)
-  private var recentNext = 0
+  // A few recent class pairs, searched before the map.
+  private val recent = RecentMethods(RecentSize)
 
   /** Drops the table if either list changed since the last call; true if it did. */
   def update(detection: ArrayBuffer[PartialFunction[(Shape, Shape), Boolean]],
@@ -38,9 +34,7 @@ private[sims] final class Narrowphase:
       detectionSnapshot = detection.toArray[AnyRef]
       collisionSnapshot = collision.toArray[AnyRef]
       table.clear()
-      java.util.Arrays.fill(recentClass1.asInstanceOf[Array[AnyRef]], null)
-      java.util.Arrays.fill(recentClass2.asInstanceOf[Array[AnyRef]], null)
-      java.util.Arrays.fill(recent.asInstanceOf[Array[AnyRef]], null)
+      recent.clear()
       true
     else false
 
@@ -104,9 +98,8 @@ private[sims] final class Narrowphase:
   def resolve(a: Shape, b: Shape): Resolved =
     val c1 = a.shapeClass
     val c2 = b.shapeClass
-    var k = 0
-    while k < RecentSize && !((recentClass1(k) eq c1) && (recentClass2(k) eq c2)) do k += 1
-    if k < RecentSize then recent(k)
+    val known = recent.find(c1, c2)
+    if known != null then known
     else
       val key = (c1, c2)
       var r = table.get(key)
@@ -121,10 +114,7 @@ private[sims] final class Narrowphase:
             s"${c1.getSimpleName} and ${c2.getSimpleName}; append one to detectionMethods")
         r = Resolved(test.get, make.orNull)
         table.put(key, r)
-      recentClass1(recentNext) = c1
-      recentClass2(recentNext) = c2
-      recent(recentNext) = r
-      recentNext = (recentNext + 1) % RecentSize
+      recent.remember(c1, c2, r)
       r
 
 private[sims] object Narrowphase:

@@ -21,29 +21,21 @@ private[sims] final class ContactTable:
   // The committed contacts by pair key (`PairKey`): the pair's slot holds its contact's index as
   // its stamp.
   private val index = new PairTable(keepsShapes = false)
-  // The committed contact `lastOf` tries before the table: the one after the contact it found
-  // last. The pairs come in much the same order every step, so this is usually the one, for
-  // a comparison of keys instead of a probe of the table. Not when a pair is listed twice:
-  // the table holds its last contact, which the guess might miss.
-  private var guess = 0
+  // Whether a lookup may guess (see `ContactTable.Lookup`): not when a pair is listed twice,
+  // since the index holds its last contact, which a guess might miss.
   private var guessing = true
+  private val lookup = ContactTable.Lookup(this)
 
   /** Starts building this step's contacts. */
   def begin(): Unit =
     current.clear()
-    guess = 0
+    lookup.restart()
 
-  /** The committed contact of the shape pair `key`, or -1. */
-  def lastOf(key: Long): Int =
-    val last = lastOf(key, guess)
-    if last >= 0 then guess = last + 1
-    last
+  /** The committed contact of the shape pair `key`, or -1 (the table's own [[ContactTable.Lookup]]). */
+  def lastOf(key: Long): Int = lookup.lastOf(key)
 
-  /** The committed contact of the shape pair `key`, or -1, trying committed contact `guess`
-    * first (the one after the caller's last find, usually). Reads only: callers on several
-    * threads keep guesses of their own.
-    */
-  def lastOf(key: Long, guess: Int): Int =
+  // The committed contact of the shape pair `key`, or -1, trying committed contact `guess` first.
+  private def find(key: Long, guess: Int): Int =
     if guessing && guess < committed.count && committed.keys(guess) == key then guess
     else
       val slot = index.find(key)
@@ -67,7 +59,7 @@ private[sims] final class ContactTable:
       index.put(committed.keys(c), c)
       c += 1
     guessing = index.size == committed.count
-    guess = 0
+    lookup.restart()
 
   /** A copy of the committed generation (for a snapshot of the world). */
   def copyCommitted(): Contacts = committed.copy()
@@ -78,6 +70,23 @@ private[sims] final class ContactTable:
     indexCommitted()
 
 private[sims] object ContactTable:
+  /** Finds the committed contacts of pairs for one reader: it first tries the committed contact
+    * after the one it found last (the pairs come in much the same order every step, so that is
+    * usually the one: a comparison of keys instead of a probe of the index), then the index.
+    * Reads the table only: readers on several threads at once each have their own.
+    */
+  final class Lookup(val table: ContactTable):
+    private var guess = 0
+
+    /** Starts again from the first committed contact (a new step). */
+    def restart(): Unit = guess = 0
+
+    /** The committed contact of the shape pair `key`, or -1. */
+    def lastOf(key: Long): Int =
+      val last = table.find(key, guess)
+      if last >= 0 then guess = last + 1
+      last
+
   // A contact's hot block in `Contacts.hot`, at `offset(c)`: what the substeps read and write,
   // `Header` doubles, then `HotPoint` per point. Compact, because the substeps sweep it eight
   // times a step: a ball's contact (one point) is 20 doubles.

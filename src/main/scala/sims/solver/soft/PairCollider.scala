@@ -2,7 +2,7 @@ package sims.solver.soft
 
 import sims.collision.{Collision, PairKey}
 import sims.collision.manifold.Manifold
-import sims.collision.narrowphase.{Narrowphase, PairKind}
+import sims.collision.narrowphase.{Narrowphase, PairKind, RecentMethods}
 import sims.dynamics.{Circle, Shape, World}
 import sims.geometry.PortableMath
 import sims.solver.ShortCopy
@@ -29,13 +29,11 @@ private[sims] final class PairCollider:
   private var bodies: SoftBodies = null
   private var timeStep, speculativeDistance, linearSlop, persistence = 0.0
   private var shared = false
-  // The last-step contact to try first for the next pair (see `ContactTable.lastOf`).
-  private var guess = 0
+  // Finds the pairs' contacts of the last step, with a guess of its own.
+  private var lookup: ContactTable.Lookup = null
   // The narrowphase's methods for the last few pairs of shape classes, so that a shared range
-  // takes the narrowphase's lock only for a class pair new to it.
-  private val recentClass1, recentClass2 = new Array[Class[?]](PairCollider.RecentSize)
-  private val recent = new Array[Narrowphase.Resolved](PairCollider.RecentSize)
-  private var recentNext = 0
+  // takes the narrowphase's lock only for a class pair new to it in the step.
+  private val recent = RecentMethods(PairCollider.RecentSize)
 
   /** Starts a step: contacts of `world`'s pairs into `target`, warm started from `table`'s
     * committed ones; `shared` when other colliders run at the same time.
@@ -52,13 +50,13 @@ private[sims] final class PairCollider:
     this.shared = shared
     timeStep = world.timeStep
     metGeneral = false
-    guess = 0
+    if lookup == null || lookup.table != table then lookup = ContactTable.Lookup(table)
+    lookup.restart()
+    // The narrowphase's methods may have changed since the last step (its `update`).
+    recent.clear()
 
   /** The last step's contact of the pair `key`, or -1. */
-  def lastOf(key: Long): Int =
-    val last = table.lastOf(key, guess)
-    if last >= 0 then guess = last + 1
-    last
+  def lastOf(key: Long): Int = lookup.lastOf(key)
 
   // The narrowphase's methods for (a, b): its own cache on this collider's thread, else the
   // narrowphase's, under its lock when shared.
@@ -66,17 +64,11 @@ private[sims] final class PairCollider:
     val narrowphase = world.collisionPipeline.narrowphase
     if !shared then narrowphase.resolve(a, b)
     else
-      val c1 = a.shapeClass
-      val c2 = b.shapeClass
-      var k = 0
-      while k < PairCollider.RecentSize && !((recentClass1(k) eq c1) && (recentClass2(k) eq c2)) do k += 1
-      if k < PairCollider.RecentSize then recent(k)
+      val known = recent.find(a.shapeClass, b.shapeClass)
+      if known != null then known
       else
         val resolved = narrowphase.synchronized(narrowphase.resolve(a, b))
-        recentClass1(recentNext) = c1
-        recentClass2(recentNext) = c2
-        recent(recentNext) = resolved
-        recentNext = (recentNext + 1) % PairCollider.RecentSize
+        recent.remember(a.shapeClass, b.shapeClass, resolved)
         resolved
 
   /** Collides the pair (a, b): its manifold (or the last step's, kept), as a contact of this step. */
