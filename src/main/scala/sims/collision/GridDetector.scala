@@ -65,6 +65,7 @@ class GridDetector(val world: World) extends Detector:
   def detect(): Unit =
     stages.findPairs(world.shapeBuffer, _gridSide, _maxPairs, "GridDetector.maxPairs", margin = 0, sweep = 0,
       inGridOrder = true)
+    pairs.fillSlots()
     narrowphase.update(detectionMethods, collisionMethods)
     resolvePairs()
     refresh()

@@ -4,13 +4,15 @@ import sims.collision.narrowphase.PairSlot
 import sims.dynamics.Shape
 
 /** The candidate pairs of one step, handed from the broadphase to the narrowphase: a growable
-  * list of [[PairSlot]]s reused from step to step (no tuple per pair), each holding what the
-  * narrowphase keeps for the pair in that place of the list.
+  * list of pairs of shapes reused from step to step (no tuple per pair), and for the classic
+  * step's narrowphase a [[PairSlot]] per place of the list, holding what it keeps for the pair
+  * in that place.
   */
 private[sims] final class PairBuffer:
   private var slots = new Array[PairSlot](64)
-  // The pairs' shapes, as in their slots, in arrays of their own: the soft step reads them for
-  // every pair without going through the slot objects.
+  // The pairs' shapes in arrays of their own, written by `add`; the slots get theirs only in
+  // `fillSlots` (the soft step never reads a slot: writing one per pair would cost it a cache
+  // miss each).
   private var firsts, seconds = new Array[Shape](64)
   private var count = 0
   private var made = 0
@@ -25,7 +27,7 @@ private[sims] final class PairBuffer:
   def size: Int = count
   /** Number of slots made so far (slots 0 until `created` exist; those from `size` on are idle). */
   def created: Int = made
-  /** The slot of pair i. */
+  /** The slot of pair i, as the last `fillSlots` left it. */
   def slot(i: Int): PairSlot = slots(i)
   /** The first shape of pair i. */
   def first(i: Int): Shape = firsts(i)
@@ -40,17 +42,23 @@ private[sims] final class PairBuffer:
       throw IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
         s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
         "has that many overlapping bounds")
-    if count == slots.length then
-      slots = java.util.Arrays.copyOf(slots, count * 2)
+    if count == firsts.length then
       firsts = java.util.Arrays.copyOf(firsts, count * 2)
       seconds = java.util.Arrays.copyOf(seconds, count * 2)
-    var s = slots(count)
-    if s == null then
-      s = PairSlot()
-      slots(count) = s
-      made += 1
-    s.first = a
-    s.second = b
     firsts(count) = a
     seconds(count) = b
     count += 1
+
+  /** Gives every pair its slot, made if there is none yet, with the pair's shapes in it. */
+  def fillSlots(): Unit =
+    if slots.length < count then slots = java.util.Arrays.copyOf(slots, firsts.length)
+    var i = 0
+    while i < count do
+      var s = slots(i)
+      if s == null then
+        s = PairSlot()
+        slots(i) = s
+        made += 1
+      s.first = firsts(i)
+      s.second = seconds(i)
+      i += 1
