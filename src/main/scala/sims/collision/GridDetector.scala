@@ -65,14 +65,17 @@ class GridDetector(val world: World) extends Detector:
   def detect(): Unit =
     stages.findPairs(world.shapeBuffer, _gridSide, _maxPairs, "GridDetector.maxPairs", margin = 0, sweep = 0,
       inGridOrder = true)
-    pairs.fillSlots()
-    narrowphase.update(detectionMethods, collisionMethods)
-    resolvePairs()
     refresh()
 
-  /** Reruns the narrowphase on the pairs of the last `detect()` from the current positions. */
+  /** Reruns the narrowphase on the pairs of the last `detect()` from the current positions (on
+    * the soft step's, if it ran since: it fills the world's broadphase with its own).
+    */
   override def refresh(): Unit =
-    if narrowphase.update(detectionMethods, collisionMethods) then resolvePairs()
+    if !pairs.slotsFilled then
+      pairs.fillSlots()
+      narrowphase.update(detectionMethods, collisionMethods)
+      resolvePairs()
+    else if narrowphase.update(detectionMethods, collisionMethods) then resolvePairs()
     found.clear()
     var i = 0
     while i < pairs.size do

@@ -16,6 +16,7 @@ private[sims] final class PairBuffer:
   private var firsts, seconds = new Array[Shape](64)
   private var count = 0
   private var made = 0
+  private var filled = true
 
   /** The most pairs one step may have (see [[sims.Defaults.MaxCandidatePairs]]). */
   var limit: Int = sims.Defaults.MaxCandidatePairs
@@ -34,7 +35,12 @@ private[sims] final class PairBuffer:
   /** The second shape of pair i. */
   def second(i: Int): Shape = seconds(i)
   /** Forgets the pairs (the slots stay for reuse). */
-  def clear(): Unit = count = 0
+  def clear(): Unit =
+    count = 0
+    filled = false
+
+  /** Whether the slots hold the pairs (`fillSlots` ran since they last changed). */
+  def slotsFilled: Boolean = filled
 
   /** Appends the pair (a, b); fails once there would be more than `limit` pairs. */
   def add(a: Shape, b: Shape): Unit =
@@ -48,6 +54,7 @@ private[sims] final class PairBuffer:
     firsts(count) = a
     seconds(count) = b
     count += 1
+    filled = false
 
   /** Gives every pair its slot, made if there is none yet, with the pair's shapes in it. */
   def fillSlots(): Unit =
@@ -62,3 +69,4 @@ private[sims] final class PairBuffer:
       s.first = firsts(i)
       s.second = seconds(i)
       i += 1
+    filled = true

@@ -48,3 +48,23 @@ class SharedBroadphaseSpec extends AnyFunSuite with Matchers:
       looking.seen.size should be >= 6
       looking.seen.distinct shouldBe Vector(2)
     }
+
+  test("the detector's refresh after a soft step finds the collisions its own detect finds") {
+    val world = World()
+    world.solver = SoftStep()
+    val ground = Rectangle(5, 0.5, 1).asBody
+    ground.fixed = true
+    world += ground
+    for i <- 0 until 5 do
+      val ball = Circle(0.2, 1).asBody
+      ball.pos = Vector2D(-1 + 0.5 * i, 0.69)
+      world += ball
+    for _ <- 0 until 3 do world.step()
+    // The soft step left its own candidate pairs in the world's broadphase.
+    world.detector.refresh()
+    def found = world.detector.collisions.map(c => (c.shape1.worldIndex, c.shape2.worldIndex)).sorted
+    val refreshed = found
+    world.detector.detect()
+    refreshed shouldBe found
+    refreshed.size shouldBe 5
+  }
