@@ -3,8 +3,8 @@ package sims.collision
 import sims.dynamics.Shape
 
 /** A table of pairs of shapes: a hash table by open addressing from a pair's key ([[PairKey]])
-  * to its two shapes and a stamp (for the open pairs of a [[PairTracker]], the step that last
-  * touched it; for the soft step's contact table, the index of the pair's contact). A key and its stamp share a cache line, so
+  * to its two shapes and a stamp (for the soft step's contact table, the index of the pair's
+  * contact; the open pairs of a [[PairTracker]] need none). A key and its stamp share a cache line, so
   * touching a pair costs one probe; pairs leave by tombstone, so a scan over the slots may
   * remove what it visits. Slot order depends on the keys and on the order of changes only: what
   * the tracker reports from a scan it sorts by key, so nothing depends on it.
@@ -32,6 +32,7 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
   // `clear` empties every slot.
   private var filledSlots = new Array[Int](32)
   private var filled = 0
+  private var rehashCount = 0
 
   /** Number of pairs. */
   def size: Int = live
@@ -63,10 +64,13 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
       k = cells(2 * slot)
     if k == key then slot else -1
 
-  /** Adds the pair `key` (not in the table) with its shapes and stamp. */
-  def insert(key: Long, first: Shape, second: Shape, stampValue: Long): Unit =
+  /** Adds the pair `key` (not in the table) with its shapes and stamp; returns its slot. */
+  def insert(key: Long, first: Shape, second: Shape, stampValue: Long): Int =
     if 2 * (live + removed + 1) > slots then rehash(if 4 * (live + 1) > slots then 2 * slots else slots)
     place(key, first, second, stampValue)
+
+  /** Counts the rehashes, each of which moves every pair to another slot. */
+  def rehashes: Int = rehashCount
 
   /** Sets the stamp of `key`, adding the pair (with no shapes) if it is not in the table: one
     * probe where `find` and then `insert` take two.
@@ -87,7 +91,7 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
         removed -= 1
       fill(slot, key, stampValue)
 
-  private def place(key: Long, first: Shape, second: Shape, stampValue: Long): Unit =
+  private def place(key: Long, first: Shape, second: Shape, stampValue: Long): Int =
     var slot = hash(key) & mask
     while cells(2 * slot) >= 0 do slot = (slot + 1) & mask // past live slots to an empty or removed one
     if cells(2 * slot) == Removed then removed -= 1
@@ -95,6 +99,7 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
     if keepsShapes then
       firsts(slot) = first
       seconds(slot) = second
+    slot
 
   private def fill(slot: Int, key: Long, stampValue: Long): Unit =
     cells(2 * slot) = key
@@ -139,6 +144,7 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
     */
   private def rehash(capacity: Int): Unit =
     val (oldCells, oldFirsts, oldSeconds) = (cells, firsts, seconds)
+    rehashCount += 1
     if spareCells.length == 2 * capacity then
       cells = spareCells; firsts = spareFirsts; seconds = spareSeconds
       java.util.Arrays.fill(cells, Empty)

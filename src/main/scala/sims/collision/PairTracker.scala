@@ -10,18 +10,29 @@ import sims.dynamics.{Shape, World}
   * never reused, unchanged when other bodies leave), packed into a Long key. For contacts the
   * earlier shape comes first; for sensors (`ordered`) the sensor comes first. The pairs that
   * have begun and not ended are the open pairs, kept in a [[PairTable]]. During a step the solver
-  * (or the sensor stage) calls `touch` for every pair touching now: an open pair is stamped, a new
-  * one opened at once and recorded as a begin. `finishStep` then scans the open pairs and ends
-  * every one not stamped this step, unless it may stay open (contacts only, see `keeps`). Every
+  * (or the sensor stage) calls `touch` for every pair touching now: an open pair is marked, a new
+  * one opened at once and recorded as a begin. `finishStep` then ends every open pair not marked
+  * this step, unless it may stay open (contacts only, see `keeps`). Every
   * begin is thus followed by exactly one end: a pair that stops touching, whose shape leaves the
   * world, stops colliding (`collidable`, filter bits, a sensor flag, a joint's
   * `collideConnected`) or whose world stops detecting collisions ends at the next step, whichever
   * solver runs it.
   *
-  * A step costs one probe per touching pair and a scan of the table; its begins and ends are
-  * kept as plain arrays, sorted by key (the shapes' world order, never a hash order) and turned
-  * into event objects only when someone reads them. The last step's are kept beside the ones
-  * being made, so that a failed step can be undone: its begins leave the table, its ends return.
+  * The pairs touch in much the same order every step (a solver lists its contacts in its
+  * broadphase's order), so the tracker also keeps the open pairs as a list, in the order of the
+  * last step's touches (then the pairs kept open untouched), each with its slot in the table. A
+  * touch first looks for its pair near the last one found in that list, a little ahead and then a
+  * little behind: a few comparisons of keys in a row, where a probe of the table is a cache miss
+  * in a big scene. Only
+  * a pair not found there probes the table. The pairs touched are marked in a bit per slot, and
+  * `finishStep` visits the list to find the open pairs not touched, instead of scanning every
+  * slot. After an undo, a restore or a rehash of the table the list may not be the open pairs:
+  * that step probes for every touch and scans the table, and leaves a list for the next.
+  *
+  * The begins and ends of a step are kept as plain arrays, sorted by key (the shapes' world order,
+  * never a hash order) and turned into event objects only when someone reads them. The last
+  * step's are kept beside the ones being made, so that a failed step can be undone: its begins
+  * leave the table, its ends return.
   *
   * @param ordered whether the pair's order is given (sensor first), rather than by world order
   */
@@ -29,7 +40,22 @@ private[sims] final class PairTracker(ordered: Boolean):
   import PairTracker.*
 
   private val open = PairTable()
-  private var stamp = 0L
+  // Per slot of `open`, whether its pair was touched this step.
+  private var touched = new Array[Long](1)
+  // The open pairs after the last step (`listed` of them), in the order of its touches and then
+  // those kept untouched: keys and slots. Exactly the open pairs when `listKnown`.
+  private var listKeys = new Array[Long](64)
+  private var listSlots = new Array[Int](64)
+  private var listed = 0
+  private var listKnown = false
+  // Where the next touch is looked for in the list: after the last pair found there.
+  private var cursor = 0
+  // This step's touches in order (each pair once), and then the pairs `finishStep` keeps open
+  // untouched: the next step's list.
+  private var touchKeys = new Array[Long](64)
+  private var touchSlots = new Array[Int](64)
+  private var touchCount = 0
+  private var rehashesSeen = 0
   // The events of the step under way, and those of the last finished step (shown).
   private var working = StepEvents()
   private var shown = StepEvents()
@@ -40,12 +66,21 @@ private[sims] final class PairTracker(ordered: Boolean):
   private var allOpenTouched = false
   private val separation = ShapeSeparation()
 
+  /** Counts the touches that probed the table, not finding their pair in the list. */
+  private[collision] var probes: Long = 0
+
   /** Counts the changes of the shown events (steps finished, undone, restored). */
   var generation: Long = 0
 
   /** Starts a step: no pair touched yet, no begins, no ends. */
   def beginStep(): Unit =
-    stamp += 1
+    val words = (open.slots + 63) >> 6
+    if touched.length != words then touched = new Array[Long](words)
+    else java.util.Arrays.fill(touched, 0L)
+    if open.rehashes != rehashesSeen then listKnown = false // an undo or a restore grew the table
+    rehashesSeen = open.rehashes
+    cursor = 0
+    touchCount = 0
     allOpenTouched = false
     working.clear()
     finished = false
@@ -60,14 +95,64 @@ private[sims] final class PairTracker(ordered: Boolean):
     val first = if lastFlipped then b else a
     val second = if lastFlipped then a else b
     val key = PairKey.of(first, second)
+    if listKnown then
+      val end = math.min(cursor + Lookahead, listed)
+      var p = cursor
+      while p < end && listKeys(p) != key do p += 1
+      if p < end then
+        cursor = p + 1
+        mark(key, listSlots(p))
+        return false
+      p = cursor - 1
+      while p >= 0 && p >= cursor - Lookahead && listKeys(p) != key do p -= 1
+      if p >= 0 && p >= cursor - Lookahead then
+        mark(key, listSlots(p))
+        return false
+    probes += 1
     val slot = open.find(key)
     if slot >= 0 then
-      open.stamp(slot, stamp)
+      mark(key, slot)
       false
     else
-      open.insert(key, first, second, stamp)
+      val placed = open.insert(key, first, second, 0)
+      if open.rehashes == rehashesSeen then mark(key, placed)
+      else
+        addTouch(key, placed)
+        remark()
       working.addBegin(key, first, second)
       true
+
+  /** Marks the pair `key` in `slot` touched, and adds it to this step's touches if it was not
+    * yet (a pair a solver lists twice is touched twice).
+    */
+  private def mark(key: Long, slot: Int): Unit =
+    val word = slot >> 6
+    val bit = 1L << (slot & 63)
+    if (touched(word) & bit) == 0 then
+      touched(word) |= bit
+      addTouch(key, slot)
+
+  private def addTouch(key: Long, slot: Int): Unit =
+    if touchCount == touchKeys.length then
+      touchKeys = java.util.Arrays.copyOf(touchKeys, 2 * touchCount)
+      touchSlots = java.util.Arrays.copyOf(touchSlots, 2 * touchCount)
+    touchKeys(touchCount) = key
+    touchSlots(touchCount) = slot
+    touchCount += 1
+
+  /** After the table rehashed to insert a pair: every pair has a new slot. Marks this step's
+    * touches again at theirs; the list's slots are stale, so `finishStep` scans the table.
+    */
+  private def remark(): Unit =
+    rehashesSeen = open.rehashes
+    listKnown = false
+    touched = new Array[Long]((open.slots + 63) >> 6)
+    var i = 0
+    while i < touchCount do
+      val slot = open.find(touchKeys(i))
+      touchSlots(i) = slot
+      touched(slot >> 6) |= 1L << (slot & 63)
+      i += 1
 
   /** Reports every open pair touching again, and no other (a step in which nothing moved: the
     * open pairs stay as they are), without looking at each: `finishStep` ends none.
@@ -86,17 +171,39 @@ private[sims] final class PairTracker(ordered: Boolean):
     * open. Sorts the step's begins and ends by key and shows them.
     */
   def finishStep(world: World): Unit =
-    var slot = 0
-    val slots = open.slots
-    while slot < slots && !allOpenTouched do
-      if open.keyAt(slot) >= 0 && open.stampAt(slot) != stamp then
-        if keeps(open.firstAt(slot), open.secondAt(slot), open.keyAt(slot), world) then open.stamp(slot, stamp)
-        else
-          working.addEnd(open.keyAt(slot), open.firstAt(slot), open.secondAt(slot))
-          open.remove(slot)
-      slot += 1
+    if allOpenTouched then
+      // The open pairs stay as they were, and so does the list, unless pairs began besides.
+      if touchCount > 0 then listKnown = false
+    else
+      if listKnown then
+        var p = 0
+        while p < listed do
+          settle(listKeys(p), listSlots(p), world)
+          p += 1
+      else
+        var slot = 0
+        while slot < open.slots do
+          if open.keyAt(slot) >= 0 then settle(open.keyAt(slot), slot, world)
+          slot += 1
+      // This step's touches and the pairs kept open are the open pairs: the next step's list.
+      val keys = listKeys
+      listKeys = touchKeys
+      touchKeys = keys
+      val slots = listSlots
+      listSlots = touchSlots
+      touchSlots = slots
+      listed = touchCount
+      listKnown = true
     show()
     finished = true
+
+  /** The open pair `key` in `slot`, if not touched this step: kept open (and listed) or ended. */
+  private def settle(key: Long, slot: Int, world: World): Unit =
+    if (touched(slot >> 6) & (1L << (slot & 63))) == 0 then
+      if keeps(open.firstAt(slot), open.secondAt(slot), key, world) then addTouch(key, slot)
+      else
+        working.addEnd(key, open.firstAt(slot), open.secondAt(slot))
+        open.remove(slot)
 
   /** Whether an open pair not touched this step stays open: a contact pair (never a sensor
     * pair) whose shapes are still in `world` and may still collide there, and are at most
@@ -121,6 +228,7 @@ private[sims] final class PairTracker(ordered: Boolean):
     * its ends come back, and the last step's events are shown again.
     */
   def undoStep(): Unit =
+    listKnown = false
     val step = if finished then shown else working
     var i = 0
     while i < step.beginCount do
@@ -154,6 +262,7 @@ private[sims] final class PairTracker(ordered: Boolean):
 
   /** Makes the pairs of a copy taken by `openPairs` the open ones, with no events shown. */
   def restoreOpen(saved: PairTracker.Saved): Unit =
+    listKnown = false
     open.clear()
     var i = 0
     while i < saved.keys.length do
@@ -194,6 +303,8 @@ private[sims] object PairTracker:
   inline val ApproachSpeed = 4
   inline val NormalImpulse = 5
   private inline val DataStride = 6
+  /** How far from the last pair found in the list a touch looks for its own, each way. */
+  private inline val Lookahead = 32
 
   /** Open pairs sorted by key (see `openPairs`): a snapshot's copy, or the pairs touching now. */
   final class Saved(val keys: Array[Long], val first: Array[Shape], val second: Array[Shape])
