@@ -24,6 +24,11 @@ private[sims] final class ContactTable:
   // Whether a lookup may guess (see `ContactTable.Lookup`): not when a pair is listed twice,
   // since the index holds its last contact, which a guess might miss.
   private var guessing = true
+  // A bit per hash of the committed contacts' keys (a Bloom filter, one hash): a pair whose bit
+  // is clear had no contact, which most candidate pairs without one learn here, in a table small
+  // enough to stay in the cache, instead of by a probe of the index. At least 8 bits per contact.
+  private var filter = new Array[Long](1)
+  private var filterShift = 58 // 64 - log2(the filter's bits)
   private val lookup = ContactTable.Lookup(this)
 
   /** Starts building this step's contacts. */
@@ -36,10 +41,34 @@ private[sims] final class ContactTable:
 
   // The committed contact of the shape pair `key`, or -1, trying committed contact `guess` first.
   private def find(key: Long, guess: Int): Int =
-    if guessing && guess < committed.count && committed.keys(guess) == key then guess
+    val near = if guessing then findNear(key, guess) else -1
+    if near >= 0 then near
+    else if !mayHave(key) then -1
     else
       val slot = index.find(key)
       if slot < 0 then -1 else index.stampAt(slot).toInt
+
+  // The committed contact of `key` among the `Nearby` from `guess` on, or the `Nearby` before it:
+  // the pairs come in much the same order every step, but a pair that began or ended shifts the
+  // rest, and pairs found in another order swap places.
+  private def findNear(key: Long, guess: Int): Int =
+    val keys = committed.keys
+    val count = committed.count
+    val end = math.min(guess + ContactTable.Nearby, count)
+    var c = guess
+    while c < end && keys(c) != key do c += 1
+    if c < end then c
+    else
+      c = math.min(guess, count) - 1
+      val start = guess - ContactTable.Nearby
+      while c >= 0 && c >= start && keys(c) != key do c -= 1
+      if c >= 0 && c >= start then c else -1
+
+  private def mayHave(key: Long): Boolean =
+    val bit = filterBit(key)
+    (filter(bit >>> 6) & (1L << (bit & 63))) != 0
+
+  private inline def filterBit(key: Long): Int = ((key * 0x9e3779b97f4a7c15L) >>> filterShift).toInt
 
   /** Makes this step's contacts the last step's. */
   def commit(): Unit =
@@ -53,10 +82,19 @@ private[sims] final class ContactTable:
 
   private def indexCommitted(): Unit =
     index.clear()
+    // 8 to 64 bits per contact: a count that goes up and down does not reallocate every step.
+    val needed = 8L * committed.count
+    val bits = 64L * filter.length
+    if bits < needed || bits > 8 * needed && bits > 64 then
+      filter = new Array[Long](math.max(1, Integer.highestOneBit(committed.count) / 4))
+    else java.util.Arrays.fill(filter, 0L)
+    filterShift = 64 - Integer.numberOfTrailingZeros(64 * filter.length)
     var c = 0
     while c < committed.count do
       // A pair listed twice (a user's detector may) finds its last contact, as it always has.
       index.put(committed.keys(c), c)
+      val bit = filterBit(committed.keys(c))
+      filter(bit >>> 6) |= 1L << (bit & 63)
       c += 1
     guessing = index.size == committed.count
     lookup.restart()
@@ -70,10 +108,14 @@ private[sims] final class ContactTable:
     indexCommitted()
 
 private[sims] object ContactTable:
-  /** Finds the committed contacts of pairs for one reader: it first tries the committed contact
-    * after the one it found last (the pairs come in much the same order every step, so that is
-    * usually the one: a comparison of keys instead of a probe of the index), then the index.
-    * Reads the table only: readers on several threads at once each have their own.
+  /** How far from its guess a lookup looks along the committed contacts before the index. */
+  private inline val Nearby = 32
+
+  /** Finds the committed contacts of pairs for one reader: it first tries the committed contacts
+    * from the one after the one it found last (the pairs come in much the same order every step,
+    * so that is usually the one: a comparison of keys instead of a probe of the index), then the
+    * table's filter, which tells most pairs without a contact, then the index. Reads the table
+    * only: readers on several threads at once each have their own.
     */
   final class Lookup(val table: ContactTable):
     private var guess = 0

@@ -1,5 +1,6 @@
 package sims.solver.soft
 
+import scala.util.Random
 import org.scalatest.funsuite.AnyFunSuite
 
 /** The contact table's lookup of the last step's contact of a pair: the same answer whether the
@@ -36,6 +37,20 @@ class ContactTableSpec extends AnyFunSuite:
     assert(table.lastOf(3L) == 3)
     assert(table.lastOf(12L) == 2)
     assert(table.lastOf(3L) == 3)
+  }
+
+  test(
+    "property: over thousands of contacts, in their order with some shifted, swapped, left out or new, or shuffled, lastOf gives what a map gives") {
+    for seed <- 1 to 30 do
+      val random = Random(seed)
+      val keys = random.shuffle((0L until 20000L).toVector).take(500 + random.nextInt(3000))
+      val table = committedWith(keys*)
+      val where = keys.zipWithIndex.toMap
+      val asked = random.nextInt(4) match
+        case 0 => random.shuffle(keys ++ Seq.fill(500)(20000L + random.nextInt(1000)))
+        case 1 => keys.grouped(3).flatMap(g => if random.nextBoolean() then g.reverse else g).toVector
+        case _ => keys.flatMap(k => if random.nextInt(10) == 0 then Seq(30000L + k) else if random.nextInt(10) == 0 then Nil else Seq(k))
+      for key <- asked do assert(table.lastOf(key) == where.getOrElse(key, -1), s"seed $seed, key $key")
   }
 
   test("a new step looks from the first committed contact again") {
