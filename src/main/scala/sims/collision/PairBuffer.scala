@@ -10,10 +10,12 @@ import sims.dynamics.Shape
   */
 private[sims] final class PairBuffer:
   private var slots = new Array[PairSlot](64)
-  // The pairs' shapes in arrays of their own, written by `add`; the slots get theirs only in
-  // `fillSlots` (the soft step never reads a slot: writing one per pair would cost it a cache
-  // miss each).
-  private var firsts, seconds = new Array[Shape](64)
+  // The pairs' shapes as indices into `shapes` (the broadphase's array, never changed once made),
+  // written by `add`: an Int store, where storing a reference costs the garbage collector's write
+  // barrier. The slots get their shapes only in `fillSlots` (the soft step never reads a slot:
+  // writing one per pair would cost it a cache miss each).
+  private var shapes = Array.empty[Shape]
+  private var firsts, seconds = new Array[Int](64)
   private var count = 0
   private var made = 0
   private var filled = true
@@ -31,19 +33,28 @@ private[sims] final class PairBuffer:
   /** The slot of pair i, as the last `fillSlots` left it. */
   def slot(i: Int): PairSlot = slots(i)
   /** The first shape of pair i. */
-  def first(i: Int): Shape = firsts(i)
+  def first(i: Int): Shape = shapes(firsts(i))
   /** The second shape of pair i. */
-  def second(i: Int): Shape = seconds(i)
+  def second(i: Int): Shape = shapes(seconds(i))
   /** Forgets the pairs (the slots stay for reuse). */
   def clear(): Unit =
     count = 0
     filled = false
 
+  /** Forgets the pairs; those added next are shapes of `shapes`, given by their indices there
+    * (an array nobody changes while the pairs are read).
+    */
+  def clear(shapes: Array[Shape]): Unit =
+    clear()
+    this.shapes = shapes
+
   /** Whether the slots hold the pairs (`fillSlots` ran since they last changed). */
   def slotsFilled: Boolean = filled
 
-  /** Appends the pair (a, b); fails once there would be more than `limit` pairs. */
-  def add(a: Shape, b: Shape): Unit =
+  /** Appends the pair of shapes a and b, indices into the array of the last `clear`; fails once
+    * there would be more than `limit` pairs.
+    */
+  def add(a: Int, b: Int): Unit =
     if count == limit then
       throw IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
         s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
@@ -66,7 +77,7 @@ private[sims] final class PairBuffer:
         s = PairSlot()
         slots(i) = s
         made += 1
-      s.first = firsts(i)
-      s.second = seconds(i)
+      s.first = shapes(firsts(i))
+      s.second = shapes(seconds(i))
       i += 1
     filled = true

@@ -20,7 +20,7 @@ private[sims] trait Broadphase:
     */
   def update(shapes: Array[Shape], margin: Double, sweep: Double, everyShape: Boolean): Unit
 
-  /** Adds every candidate pair of the last `update` to `pairs` once (see [[sims.collision.PairFilter]],
+  /** Makes `pairs` every candidate pair of the last `update`, each once (see [[sims.collision.PairFilter]],
     * applied to the shapes' filters and bodies as they were at that `update`), the shape that
     * joined the world first being the pair's first shape.
     */

@@ -150,6 +150,7 @@ private[sims] final class UniformGrid extends Broadphase:
     */
   def findPairs(pairs: PairBuffer, inGridOrder: Boolean): Unit =
     sorted = inGridOrder
+    pairs.clear(shapes)
     resetGrid()
     val side = _gridSide
     var i = 0
@@ -194,7 +195,7 @@ private[sims] final class UniformGrid extends Broadphase:
             k += 1
         var g = 0
         while g < groupSize do
-          pairs.add(shapes(groupShape(groupKeys(g))), shapes(i))
+          pairs.add(groupShape(groupKeys(g)), i)
           g += 1
       i += 1
     gridBuilt = true
@@ -206,7 +207,7 @@ private[sims] final class UniformGrid extends Broadphase:
       while j < count do
         val earlierLarge = j < big && placement(j) == Large
         if j != big && placement(j) != Ignored && !earlierLarge && candidates(j, big) then
-          if j < big then pairs.add(shapes(j), shapes(big)) else pairs.add(shapes(big), shapes(j))
+          if j < big then pairs.add(j, big) else pairs.add(big, j)
         j += 1
       k += 1
 
