@@ -96,7 +96,7 @@ private[sims] final class UniformGrid extends Broadphase:
       val s = shapes(i)
       if (!s.collidable || s.sensor) && !everyShape then placement(i) = Ignored
       else
-        owner(i) = s.body
+        if owner(i) ne s.body then owner(i) = s.body // no write barrier for last step's body
         filterKind(i) = kindOf(s)
         val reach =
           if sweep == 0 then margin

@@ -384,8 +384,10 @@ private[sims] final class PairCollider:
   private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double, points: Int,
       stiffness: Double): Int =
     val c = contacts.add(points)
-    contacts.shapeA(c) = a
-    contacts.shapeB(c) = b
+    // Storing a reference costs the garbage collector's write barrier, and the slot usually holds
+    // these shapes already: a generation's slots are reused every other step, in much the same order.
+    if contacts.shapeA(c) ne a then contacts.shapeA(c) = a
+    if contacts.shapeB(c) ne b then contacts.shapeB(c) = b
     contacts.bodyA(c) = a.body.index
     contacts.bodyB(c) = b.body.index
     contacts.keys(c) = key

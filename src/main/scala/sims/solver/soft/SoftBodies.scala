@@ -51,7 +51,7 @@ private[sims] final class SoftBodies:
     var i = 0
     while i < count do
       val b = list(i)
-      bodies(i) = b
+      if bodies(i) ne b then bodies(i) = b // no write barrier for the same body as last step
       gravityScale(i) = b.gravityScale
       if b.damped then
         anyDamped = true
