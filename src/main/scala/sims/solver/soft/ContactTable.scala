@@ -41,12 +41,14 @@ private[sims] final class ContactTable:
 
   // The committed contact of the shape pair `key`, or -1, trying committed contact `guess` first.
   private def find(key: Long, guess: Int): Int =
-    val near = if guessing then findNear(key, guess) else -1
-    if near >= 0 then near
-    else if !mayHave(key) then -1
+    if guessing && guess < committed.count && committed.keys(guess) == key then guess
+    else if !mayHave(key) then -1 // before the search near the guess, which a pair with no contact would run to its end
     else
-      val slot = index.find(key)
-      if slot < 0 then -1 else index.stampAt(slot).toInt
+      val near = if guessing then findNear(key, guess) else -1
+      if near >= 0 then near
+      else
+        val slot = index.find(key)
+        if slot < 0 then -1 else index.stampAt(slot).toInt
 
   // The committed contact of `key` among the `Nearby` from `guess` on, or the `Nearby` before it:
   // the pairs come in much the same order every step, but a pair that began or ended shifts the
@@ -111,11 +113,11 @@ private[sims] object ContactTable:
   /** How far from its guess a lookup looks along the committed contacts before the index. */
   private inline val Nearby = 32
 
-  /** Finds the committed contacts of pairs for one reader: it first tries the committed contacts
-    * from the one after the one it found last (the pairs come in much the same order every step,
-    * so that is usually the one: a comparison of keys instead of a probe of the index), then the
-    * table's filter, which tells most pairs without a contact, then the index. Reads the table
-    * only: readers on several threads at once each have their own.
+  /** Finds the committed contacts of pairs for one reader: it first tries the committed contact
+    * after the one it found last (the pairs come in much the same order every step, so that is
+    * usually the one: a comparison of keys instead of a probe of the index), then the table's
+    * filter, which tells most pairs without a contact, then the contacts near that one, then the
+    * index. Reads the table only: readers on several threads at once each have their own.
     */
   final class Lookup(val table: ContactTable):
     private var guess = 0
