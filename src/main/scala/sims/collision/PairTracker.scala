@@ -22,9 +22,9 @@ import sims.dynamics.{Shape, World}
   * broadphase's order), so the tracker also keeps the open pairs as a list, in the order of the
   * last step's touches (then the pairs kept open untouched), each with its slot in the table. A
   * touch first looks for its pair near the last one found in that list, a little ahead and then a
-  * little behind: a few comparisons of keys in a row, where a probe of the table is a cache miss
-  * in a big scene. Only
-  * a pair not found there probes the table. The pairs touched are marked in a bit per slot, and
+  * little behind (`PairKey.near`): a few comparisons of keys in a row, where a probe of the table
+  * is a cache miss in a big scene. Only a pair not found there probes the table. The pairs
+  * touched are marked in a bit per slot, and
   * `finishStep` visits the list to find the open pairs not touched, instead of scanning every
   * slot. After an undo, a restore or a rehash of the table the list may not be the open pairs:
   * that step probes for every touch and scans the table, and leaves a list for the next.
@@ -96,16 +96,9 @@ private[sims] final class PairTracker(ordered: Boolean):
     val second = if lastFlipped then a else b
     val key = PairKey.of(first, second)
     if listKnown then
-      val end = math.min(cursor + Lookahead, listed)
-      var p = cursor
-      while p < end && listKeys(p) != key do p += 1
-      if p < end then
-        cursor = p + 1
-        mark(key, listSlots(p))
-        return false
-      p = cursor - 1
-      while p >= 0 && p >= cursor - Lookahead && listKeys(p) != key do p -= 1
-      if p >= 0 && p >= cursor - Lookahead then
+      val p = PairKey.near(listKeys, listed, cursor, key)
+      if p >= 0 then
+        if p >= cursor then cursor = p + 1 // found ahead: the touches go on from there
         mark(key, listSlots(p))
         return false
     probes += 1
@@ -126,11 +119,13 @@ private[sims] final class PairTracker(ordered: Boolean):
     * yet (a pair a solver lists twice is touched twice).
     */
   private def mark(key: Long, slot: Int): Unit =
-    val word = slot >> 6
-    val bit = 1L << (slot & 63)
-    if (touched(word) & bit) == 0 then
-      touched(word) |= bit
+    if !isTouched(slot) then
+      setTouched(slot)
       addTouch(key, slot)
+
+  private inline def isTouched(slot: Int): Boolean = (touched(slot >> 6) & (1L << (slot & 63))) != 0
+
+  private inline def setTouched(slot: Int): Unit = touched(slot >> 6) |= 1L << (slot & 63)
 
   private def addTouch(key: Long, slot: Int): Unit =
     if touchCount == touchKeys.length then
@@ -151,7 +146,7 @@ private[sims] final class PairTracker(ordered: Boolean):
     while i < touchCount do
       val slot = open.find(touchKeys(i))
       touchSlots(i) = slot
-      touched(slot >> 6) |= 1L << (slot & 63)
+      setTouched(slot)
       i += 1
 
   /** Reports every open pair touching again, and no other (a step in which nothing moved: the
@@ -199,7 +194,7 @@ private[sims] final class PairTracker(ordered: Boolean):
 
   /** The open pair `key` in `slot`, if not touched this step: kept open (and listed) or ended. */
   private def settle(key: Long, slot: Int, world: World): Unit =
-    if (touched(slot >> 6) & (1L << (slot & 63))) == 0 then
+    if !isTouched(slot) then
       if keeps(open.firstAt(slot), open.secondAt(slot), key, world) then addTouch(key, slot)
       else
         working.addEnd(key, open.firstAt(slot), open.secondAt(slot))
@@ -303,8 +298,6 @@ private[sims] object PairTracker:
   inline val ApproachSpeed = 4
   inline val NormalImpulse = 5
   private inline val DataStride = 6
-  /** How far from the last pair found in the list a touch looks for its own, each way. */
-  private inline val Lookahead = 32
 
   /** Open pairs sorted by key (see `openPairs`): a snapshot's copy, or the pairs touching now. */
   final class Saved(val keys: Array[Long], val first: Array[Shape], val second: Array[Shape])

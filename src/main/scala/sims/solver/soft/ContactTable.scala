@@ -1,6 +1,6 @@
 package sims.solver.soft
 
-import sims.collision.PairTable
+import sims.collision.{PairKey, PairTable}
 import sims.dynamics.Shape
 
 /** The soft step's contacts: one record per touching (or nearly touching) pair of shapes, with
@@ -44,27 +44,11 @@ private[sims] final class ContactTable:
     if guessing && guess < committed.count && committed.keys(guess) == key then guess
     else if !mayHave(key) then -1 // before the search near the guess, which a pair with no contact would run to its end
     else
-      val near = if guessing then findNear(key, guess) else -1
+      val near = if guessing then PairKey.near(committed.keys, committed.count, guess, key) else -1
       if near >= 0 then near
       else
         val slot = index.find(key)
         if slot < 0 then -1 else index.stampAt(slot).toInt
-
-  // The committed contact of `key` among the `Nearby` from `guess` on, or the `Nearby` before it:
-  // the pairs come in much the same order every step, but a pair that began or ended shifts the
-  // rest, and pairs found in another order swap places.
-  private def findNear(key: Long, guess: Int): Int =
-    val keys = committed.keys
-    val count = committed.count
-    val end = math.min(guess + ContactTable.Nearby, count)
-    var c = guess
-    while c < end && keys(c) != key do c += 1
-    if c < end then c
-    else
-      c = math.min(guess, count) - 1
-      val start = guess - ContactTable.Nearby
-      while c >= 0 && c >= start && keys(c) != key do c -= 1
-      if c >= 0 && c >= start then c else -1
 
   private def mayHave(key: Long): Boolean =
     val bit = filterBit(key)
@@ -110,9 +94,6 @@ private[sims] final class ContactTable:
     indexCommitted()
 
 private[sims] object ContactTable:
-  /** How far from its guess a lookup looks along the committed contacts before the index. */
-  private inline val Nearby = 32
-
   /** Finds the committed contacts of pairs for one reader: it first tries the committed contact
     * after the one it found last (the pairs come in much the same order every step, so that is
     * usually the one: a comparison of keys instead of a probe of the index), then the table's
