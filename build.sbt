@@ -35,6 +35,7 @@ lazy val root = (project in file("."))
     LocalProject("scenesJS"),
     LocalProject("playground"),
     LocalProject("benchPage"),
+    LocalProject("benchPageWasm"),
     LocalProject("browserTests")
   )
   .settings(
@@ -343,6 +344,7 @@ lazy val browserTests = (project in file("playground/browser-tests"))
     Test / fork := true,
     Test / javaOptions += s"-Dsims.playground.site=${(playground / staticSite).value}",
     Test / javaOptions += s"-Dsims.playground.screenshot=${target.value / "playground.png"}",
+    Test / javaOptions += s"-Dsims.bench.bundles=${(benchPage / bundles).value}",
     Test / parallelExecution := false,
     browserBench := Def.taskDyn {
       val site = (benchPage / staticSite).value
@@ -351,10 +353,16 @@ lazy val browserTests = (project in file("playground/browser-tests"))
     }.value
   )
 
-/** The browser benchmark page (bench/browser/site): the bench scenes with SiMS (this bundle) and
-  * with planck, matter-js and Rapier, installed from npm by `staticSite` (bench/browser's
-  * package.json and package-lock.json) into the site folder under target/. Run it with
-  * `./sbt browserTests/browserBench`, which writes the table into docs/src/performance.md.
+/** The bench page's SiMS bundles in one folder: `sims-bench.js` (fullLinkJS, JavaScript), and
+  * `wasm/` (fullLinkJS of `benchPageWasm`, WebAssembly), with `bits.html`, the page that steps
+  * both.
+  */
+lazy val bundles = taskKey[File]("the bench page's SiMS bundles, JavaScript and WebAssembly, in one folder")
+
+/** The browser benchmark page (bench/browser/site): the bench scenes with SiMS (this bundle and
+  * `benchPageWasm`'s) and with planck, matter-js and Rapier, installed from npm by `staticSite`
+  * (bench/browser's package.json and package-lock.json) into the site folder under target/. Run it
+  * with `./sbt browserTests/browserBench`, which writes the table into docs/src/performance.md.
   */
 lazy val benchPage = (project in file("bench/browser"))
   .enablePlugins(ScalaJSPlugin)
@@ -363,14 +371,26 @@ lazy val benchPage = (project in file("bench/browser"))
     name := "sims-bench-page",
     publish / skip := true,
     scalaJSUseMainModuleInitializer := true,
+    Compile / mainClass := Some("sims.benchpage.Main"),
     coverageEnabled := false,
-    staticSite := {
+    bundles := {
       val bundle = (Compile / fullLinkJS).value.data
       val bundleDirectory = (Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
+      val wasm = (benchPageWasm / Compile / fullLinkJS).value.data
+      val wasmDirectory = (benchPageWasm / Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
+      val out = target.value / "bundles"
+      IO.delete(out)
+      IO.copyFile(bundleDirectory / bundle.publicModules.head.jsFileName, out / "sims-bench.js")
+      // The module, its loader and the WebAssembly binary (no source map).
+      IO.listFiles(wasmDirectory).filterNot(_.getName.endsWith(".map")).foreach(f => IO.copyFile(f, out / "wasm" / f.getName))
+      IO.copyFile(baseDirectory.value / "site" / "bits.html", out / "bits.html")
+      out
+    },
+    staticSite := {
       val out = target.value / "site"
       val log = streams.value.log
       IO.copyDirectory(baseDirectory.value / "site", out, overwrite = true)
-      IO.copyFile(bundleDirectory / bundle.publicModules.head.jsFileName, out / "sims-bench.js")
+      IO.copyDirectory(bundles.value, out, overwrite = true)
       for (file <- Seq("package.json", "package-lock.json")) IO.copyFile(baseDirectory.value / file, out / file)
       if (!(out / "node_modules" / ".package-lock.json").exists) {
         log.info("bench page: installing the peers with npm ci")
@@ -380,3 +400,25 @@ lazy val benchPage = (project in file("bench/browser"))
       out
     }
   )
+
+/** The bench page's SiMS linked to WebAssembly by Scala.js's WebAssembly backend (an ES module,
+  * its loader and `main.wasm`): the same sources as `benchPage`, offered to the page as
+  * `simsBenchWasm`. Needs a browser with Wasm GC and exception handling (Chromium 137 or later);
+  * Node 20 has neither, so its tests run in Chromium (`browserTests`).
+  */
+lazy val benchPageWasm = (project in file("bench/browser/wasm"))
+  .enablePlugins(ScalaJSPlugin)
+  .dependsOn(scenesJS)
+  .settings(
+    name := "sims-bench-page-wasm",
+    publish / skip := true,
+    // benchPage's sources (bench/browser/src), this project being its folder's subfolder.
+    Compile / unmanagedSourceDirectories += baseDirectory.value.getParentFile / "src" / "main" / "scala",
+    scalaJSUseMainModuleInitializer := true,
+    Compile / mainClass := Some("sims.benchpage.WasmMain"),
+    scalaJSLinkerConfig ~= (_.withExperimentalUseWebAssembly(true).withModuleKind(ModuleKind.ESModule)),
+    // No tests of its own, and Node 20 cannot load it to look for test frameworks.
+    Test / loadedTestFrameworks := Map.empty,
+    coverageEnabled := false
+  )
+

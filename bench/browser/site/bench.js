@@ -1,6 +1,7 @@
-// The browser benchmark: every bench scene with SiMS (Scala.js, both steps) and with planck,
-// matter-js and Rapier (WebAssembly), each built from the same layout values, timed alike
-// (warm-up steps, then timed steps), and checked for sanity with the same criteria after the run.
+// The browser benchmark: every bench scene with SiMS (Scala.js: both steps linked to JavaScript,
+// the soft step linked to WebAssembly too) and with planck, matter-js and Rapier (WebAssembly),
+// each built from the same layout values, timed alike (warm-up steps, then timed steps), and
+// checked for sanity with the same criteria after the run.
 import RAPIER from "./node_modules/@dimforge/rapier2d-compat/dist/rapier.mjs";
 
 const WarmUpSteps = 100;
@@ -12,6 +13,7 @@ const Iterations = 10; // velocity and position iterations, as in the JVM bench
 const engines = {
   "SiMS ClassicStep": (name) => simsBench.world(name, "ClassicStep"),
   "SiMS SoftStep": (name) => simsBench.world(name, "SoftStep"),
+  "SiMS SoftStep Wasm": (name) => simsBenchWasm.world(name, "SoftStep"),
   "planck": (name) => planckWorld(simsBench.layout(name)),
   "matter-js": (name) => matterWorld(simsBench.layout(name)),
   "Rapier": (name) => rapierWorld(simsBench.layout(name)),
@@ -146,6 +148,8 @@ function pause() { return new Promise((resolve) => setTimeout(resolve, 0)); }
 // median of its turns.
 async function run() {
   await RAPIER.init();
+  // The WebAssembly bundle, an ES module, sets simsBenchWasm once its binary is instantiated.
+  await import("./wasm/main.js");
   const results = [];
   const status = document.getElementById("status");
   for (const name of simsBench.names) {

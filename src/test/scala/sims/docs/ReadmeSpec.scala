@@ -35,6 +35,14 @@ class ReadmeSpec extends AnyFunSuite with Matchers:
     readme should include("choose SiMS's own\nstep, `ClassicStep`")
   }
 
+  test("the README's WebAssembly linker setting is the one the bench page's WebAssembly build uses") {
+    val readme = scala.io.Source.fromFile("README.md").mkString
+    val build = scala.io.Source.fromFile("build.sbt").mkString
+    val setting = "scalaJSLinkerConfig ~= (_.withExperimentalUseWebAssembly(true).withModuleKind(ModuleKind.ESModule))"
+    readme should include(setting)
+    build should include(setting)
+  }
+
   test("the README's code block is the one tested here") {
     val readme = scala.io.Source.fromFile("README.md").mkString
     val source = scala.io.Source.fromFile("src/test/scala/sims/docs/ReadmeSpec.scala").mkString

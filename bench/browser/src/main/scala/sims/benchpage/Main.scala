@@ -5,7 +5,9 @@ import sims.scenes.{BenchScenes, Layout, LayoutScene, Outline}
 import sims.solver.{ClassicStep, SoftStep}
 
 /** The SiMS side of the browser benchmark page (bench/browser/site): offers
-  * `window.simsBench` to the page's script, which times SiMS and the JavaScript engines alike.
+  * `window.simsBench` (this bundle, JavaScript) to the page's script, which times SiMS and the
+  * JavaScript engines alike; [[WasmMain]] offers the same as `window.simsBenchWasm` from the bundle
+  * linked to WebAssembly.
   * `layout(name)` gives a bench scene as plain values for the other engines to build (the same
   * `sims.scenes.Layout` the JVM bench's peers translate); `world(name, solver)` a SiMS world of it with
   * `step()`, `state()` (x, y, angle of every body) and `jointLengths()`.
@@ -33,7 +35,10 @@ object Main:
     timeStep = layout.timeStep,
     bounds = js.Array(layout.bounds.minX, layout.bounds.minY, layout.bounds.maxX, layout.bounds.maxY))
 
-  def main(args: Array[String]): Unit =
+  def main(args: Array[String]): Unit = offer("simsBench")
+
+  /** Sets the page's global `name` to this bundle's bench interface. */
+  def offer(name: String): Unit =
     val api = js.Dynamic.literal(
       names = js.Array(Names*),
       layout = (name: String) => exported(layoutScene(name).layout),
@@ -59,4 +64,4 @@ object Main:
           jointLengths = () => js.Array(joints.map(j => (j.connection2 - j.connection1).length)*)
         )
     )
-    js.Dynamic.global.globalThis.updateDynamic("simsBench")(api)
+    js.Dynamic.global.globalThis.updateDynamic(name)(api)

@@ -14,7 +14,8 @@ object BrowserBench:
   /** One engine on one scene: ms per step and the sanity check after the run. */
   final case class Row(scene: String, engine: String, millis: Double, ok: Boolean, detail: String)
 
-  private val Soft = "SiMS SoftStep"
+  /** The soft step linked to JavaScript and to WebAssembly: the rows compared with the peers. */
+  private val Softs = Seq("SiMS SoftStep", "SiMS SoftStep Wasm")
 
   def main(args: Array[String]): Unit =
     require(args.length == 2, "arguments: the bench page's folder and docs/src/performance.md")
@@ -62,28 +63,35 @@ object BrowserBench:
     def cell(scene: String, engine: String): String =
       row(scene, engine).fold("")(r => f"${r.millis}%.3f" + (if r.ok then "" else " (insane)"))
     def millis(scene: String, engine: String): Option[Double] = row(scene, engine).map(_.millis)
-    // SoftStep is the solver to compare: the classic step fails the checks on most scenes.
-    def ratio(scene: String, peer: String): Option[Double] =
-      for soft <- millis(scene, Soft); other <- millis(scene, peer) yield soft / other
+    // The soft step is the solver to compare: the classic step fails the checks on most scenes.
+    def ratio(scene: String, soft: String, peer: String): Option[Double] =
+      for time <- millis(scene, soft); other <- millis(scene, peer) yield time / other
+    val softs = Softs.filter(engines.contains)
     val peers = engines.filterNot(_.startsWith("SiMS"))
+    val pairs = for soft <- softs; peer <- peers yield (soft, peer)
     val header = s"| scene | ${engines.mkString(" | ")} |\n|---|${engines.map(_ => "---:").mkString("|")}|\n"
     val body = scenes.map(s => s"| $s | ${engines.map(cell(s, _)).mkString(" | ")} |").mkString("\n")
     val ratios =
-      s"| scene | ${peers.map(p => s"$Soft / $p").mkString(" | ")} |\n|---|${peers.map(_ => "---:").mkString("|")}|\n" +
-        scenes.map(s => s"| $s | ${peers.map(p => ratio(s, p).fold("")(r => f"$r%.2f")).mkString(" | ")} |").mkString("\n")
+      s"| scene | ${pairs.map((soft, p) => s"$soft / $p").mkString(" | ")} |\n|---|${pairs.map(_ => "---:").mkString("|")}|\n" +
+        scenes.map(s => s"| $s | ${pairs.map((soft, p) => ratio(s, soft, p).fold("")(r => f"$r%.2f")).mkString(" | ")} |")
+          .mkString("\n")
     // What the figures say of the aims: faster than the JavaScript engines, within 1.5 times Rapier's WebAssembly.
-    def aim(peer: String, bound: Double, wanted: String): String = scenes.filter(s => ratio(s, peer).exists(_ > bound)) match
-      case Seq() => s"$wanted $peer on every scene"
-      case missed => s"not $wanted $peer on ${missed.mkString(", ")}"
+    def aim(soft: String)(peer: String, bound: Double, wanted: String): String =
+      scenes.filter(s => ratio(s, soft, peer).exists(_ > bound)) match
+        case Seq() => s"$wanted $peer on every scene"
+        case missed => s"not $wanted $peer on ${missed.mkString(", ")}"
     val aims = Seq(("planck", 1.0, "faster than"), ("matter-js", 1.0, "faster than"), ("Rapier", 1.5, "within 1.5 times"))
-    val summary = aims.filter((peer, _, _) => peers.contains(peer)).map(aim).mkString("; ")
+    val summary = softs.map(soft => s"$soft is " + aims.filter((peer, _, _) => peers.contains(peer)).map(aim(soft)).mkString("; "))
+      .mkString(". ")
     val sanity = rows.map(r => s"| ${r.scene} | ${r.engine} | ${if r.ok then "ok" else "failed"} | ${r.detail} |").mkString("\n")
     // The tables go in after stripMargin, which would take the pipe off the start of their rows.
     s"""## Browser
        |
        |The bench scenes in headless Chromium (`./sbt browserTests/browserBench`, which builds the
        |page of `bench/browser` and writes this section): SiMS compiled with Scala.js (fullLinkJS),
-       |and in the same page planck 1.5.0, matter-js 0.20.0 and Rapier (`@dimforge/rapier2d-compat`
+       |both steps linked to JavaScript and the soft step linked to WebAssembly too ("SiMS SoftStep
+       |Wasm": the same sources, the same bits, by Scala.js's WebAssembly backend, see "SiMS in
+       |WebAssembly" below), and in the same page planck 1.5.0, matter-js 0.20.0 and Rapier (`@dimforge/rapier2d-compat`
        |0.21.0, Rust compiled to WebAssembly), each from npm, each building the scene from the same
        |layout values. Every engine runs $warmUp steps before $timed timed steps, the engines of a scene
        |taking turns of 10 steps (the order rotating from turn to turn, so that a change in the
@@ -99,11 +107,11 @@ object BrowserBench:
        |
        |@times@
        |
-       |SiMS SoftStep's time over each peer's (below 1: SiMS is faster):
+       |The soft step's time over each peer's, in JavaScript and in WebAssembly (below 1: SiMS is faster):
        |
        |@ratios@
        |
-       |In this run SiMS SoftStep is @summary@.
+       |In this run @summary@.
        |
        |Sanity after the run:
        |

@@ -28,6 +28,19 @@ class BrowserBenchSpec extends AnyFunSuite:
         "not faster than matter-js on chain-100; not within 1.5 times Rapier on chain-100."))
   }
 
+  test("with the soft step in WebAssembly too, each soft step's ratios and aims") {
+    val both = BrowserBench.markdown(
+      rows(soft = 1.0, planck = 4.0, matter = 2.0, rapier = 0.8, "ballpit-500") :+
+        Row("ballpit-500", "SiMS SoftStep Wasm", 0.6, ok = true, "0 outside"),
+      "100", "200", "a browser", clockStep = 0.005)
+    assert(both.contains("| scene | SiMS SoftStep / planck | SiMS SoftStep / matter-js | SiMS SoftStep / Rapier | " +
+        "SiMS SoftStep Wasm / planck | SiMS SoftStep Wasm / matter-js | SiMS SoftStep Wasm / Rapier |"))
+    assert(both.contains("| ballpit-500 | 0.25 | 0.50 | 1.25 | 0.15 | 0.30 | 0.75 |"))
+    assert(both.contains("In this run SiMS SoftStep is faster than planck on every scene; faster than matter-js on " +
+        "every scene; within 1.5 times Rapier on every scene. SiMS SoftStep Wasm is faster than planck on every scene; " +
+        "faster than matter-js on every scene; within 1.5 times Rapier on every scene."))
+  }
+
   test("the report says how fine the page's clock reads") {
     assert(report.contains("its clock reads in steps of\n5.0 µs"))
   }
