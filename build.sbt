@@ -34,6 +34,7 @@ lazy val root = (project in file("."))
     LocalProject("simsJS"),
     LocalProject("scenesJS"),
     LocalProject("playground"),
+    LocalProject("playgroundWasm"),
     LocalProject("benchPage"),
     LocalProject("benchPageWasm"),
     LocalProject("browserTests")
@@ -305,7 +306,10 @@ lazy val bench = (project in file("bench"))
   */
 lazy val staticSite = taskKey[File]("the page and its optimised bundle, in one folder ready for static hosting")
 
-/** The playground: one static page (playground/site) and its bundle, every scene on a canvas. */
+/** The playground: one static page (playground/site) and its bundles, every scene on a canvas:
+  * SiMS linked to WebAssembly (`playgroundWasm`, in `wasm/`), which the page runs where the browser
+  * can, and to JavaScript (`playground.js`), which it runs elsewhere.
+  */
 lazy val playground = (project in file("playground"))
   .enablePlugins(ScalaJSPlugin)
   .dependsOn(scenesJS)
@@ -318,13 +322,34 @@ lazy val playground = (project in file("playground"))
     staticSite := {
       val bundle = (Compile / fullLinkJS).value.data
       val bundleDirectory = (Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
+      (playgroundWasm / Compile / fullLinkJS).value
+      val wasmDirectory = (playgroundWasm / Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
       val out = target.value / "site"
       IO.delete(out)
       IO.copyDirectory(baseDirectory.value / "site", out)
       IO.copyFile(bundleDirectory / bundle.publicModules.head.jsFileName, out / "playground.js")
-      streams.value.log.info(s"playground: open ${out / "index.html"} (or serve the folder)")
+      // The module, its loader and the WebAssembly binary (no source map).
+      IO.listFiles(wasmDirectory).filterNot(_.getName.endsWith(".map")).foreach(f => IO.copyFile(f, out / "wasm" / f.getName))
+      streams.value.log.info(s"playground: serve $out and open its address, or open ${out / "index.html"} (JavaScript)")
       out
     }
+  )
+
+/** The playground linked to WebAssembly by Scala.js's WebAssembly backend: the same sources. */
+lazy val playgroundWasm = (project in file("playground/wasm"))
+  .enablePlugins(ScalaJSPlugin)
+  .dependsOn(scenesJS)
+  .settings(
+    name := "sims-playground-wasm",
+    publish / skip := true,
+    // The playground's sources (playground/src), this project being its folder's subfolder.
+    Compile / unmanagedSourceDirectories += baseDirectory.value.getParentFile / "src" / "main" / "scala",
+    scalaJSUseMainModuleInitializer := true,
+    libraryDependencies += "org.scala-js" %%% "scalajs-dom" % "2.8.1",
+    scalaJSLinkerConfig ~= (_.withExperimentalUseWebAssembly(true).withModuleKind(ModuleKind.ESModule)),
+    // No tests of its own, and Node 20 cannot load it to look for test frameworks.
+    Test / loadedTestFrameworks := Map.empty,
+    coverageEnabled := false
   )
 
 /** The playground in headless Chromium (Selenium and Debian's chromium-driver): the page, its
@@ -421,4 +446,3 @@ lazy val benchPageWasm = (project in file("bench/browser/wasm"))
     Test / loadedTestFrameworks := Map.empty,
     coverageEnabled := false
   )
-

@@ -89,6 +89,7 @@ object Main:
         val world = playground.world
         js.Dynamic.literal(
           scene = playground.sceneName,
+          linkedTo = Playground.LinkedTo,
           playing = playground.isPlaying,
           time = world.time,
           fingerprint = StateFingerprint(world),

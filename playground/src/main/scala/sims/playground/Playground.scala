@@ -107,7 +107,7 @@ final class Playground(canvas: dom.HTMLCanvasElement, info: dom.Element):
     Painter.paint(context, world, view)
     val contacts = world.contacts.map(_.points.size).sum
     info.textContent = f"${scene.name} · $solverInUse · ${world.bodies.length} bodies · $contacts contacts · " +
-      f"${lastStepMillis}%.2f ms/step · t = ${world.time}%.2f s · state ${StateFingerprint(world)}"
+      f"${lastStepMillis}%.2f ms/step (${Playground.LinkedTo}) · t = ${world.time}%.2f s · state ${StateFingerprint(world)}"
 
   /** The pointer went down at canvas pixel (x, y): grab the free body there, else start panning. */
   def pointerDown(x: Double, y: Double): Unit =
@@ -150,6 +150,9 @@ final class Playground(canvas: dom.HTMLCanvasElement, info: dom.Element):
 object Playground:
   /** How hard the mouse pulls: this many newtons per kilogram of the body. */
   val DragForcePerKilogram: Double = 50 * 9.81
+
+  /** What this bundle was linked to: "WebAssembly" or "JavaScript". */
+  val LinkedTo: String = if scala.scalajs.LinkingInfo.isWebAssembly then "WebAssembly" else "JavaScript"
 
   /** The solvers offered, by name. */
   val SolverNames: Seq[String] = Seq("ClassicStep", "SoftStep")

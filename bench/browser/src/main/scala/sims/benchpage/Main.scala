@@ -6,7 +6,7 @@ import sims.solver.{ClassicStep, SoftStep}
 
 /** The SiMS side of the browser benchmark page (bench/browser/site): offers
   * `window.simsBench` (this bundle, JavaScript) to the page's script, which times SiMS and the
-  * JavaScript engines alike; [[WasmMain]] offers the same as `window.simsBenchWasm` from the bundle
+  * JavaScript engines alike; `WasmMain` offers the same as `window.simsBenchWasm` from the bundle
   * linked to WebAssembly.
   * `layout(name)` gives a bench scene as plain values for the other engines to build (the same
   * `sims.scenes.Layout` the JVM bench's peers translate); `world(name, solver)` a SiMS world of it with

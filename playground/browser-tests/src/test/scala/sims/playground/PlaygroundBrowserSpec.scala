@@ -167,3 +167,18 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
         s"$name, SoftStep")
     val errors = browser.consoleErrors()
     assert(errors.isEmpty, errors.mkString("\n"))
+
+  test("the page runs SiMS linked to WebAssembly; asked for JavaScript, the JavaScript bundle, with the same fingerprints"):
+    assert(script("return window.simsPlayground.state().linkedTo") == "WebAssembly")
+    assert(element("info").getText.contains("(WebAssembly)"))
+    browser.driver.get(browser.address("index.html?javascript"))
+    WebDriverWait(
+      browser.driver, Duration.ofSeconds(30)).until(d => script("return window.simsPlayground !== undefined") == java.lang.Boolean.TRUE)
+    assert(script("return window.simsPlayground.state().linkedTo") == "JavaScript")
+    for (name, (classic, soft)) <- PlatformHashesSpec.Expected do
+      assert(script(s"return window.simsPlayground.run('$name', 'ClassicStep', ${PlatformHashesSpec.Steps})") == classic,
+        s"$name, ClassicStep")
+      assert(script(s"return window.simsPlayground.run('$name', 'SoftStep', ${PlatformHashesSpec.Steps})") == soft,
+        s"$name, SoftStep")
+    val errors = browser.consoleErrors()
+    assert(errors.isEmpty, errors.mkString("\n"))
