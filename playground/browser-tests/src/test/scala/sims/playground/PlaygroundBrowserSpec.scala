@@ -5,8 +5,7 @@ import java.nio.file.{Files, StandardCopyOption}
 import java.time.Duration
 import org.openqa.selenium.{By, OutputType}
 import org.openqa.selenium.interactions.Actions
-import org.openqa.selenium.support.ui.{Select, WebDriverWait}
-import org.scalatest.BeforeAndAfterAll
+import org.openqa.selenium.support.ui.Select
 import org.scalatest.funsuite.AnyFunSuite
 import scala.jdk.CollectionConverters.*
 import sims.scenes.{PlatformHashesSpec, Scenes, StateFingerprint}
@@ -15,23 +14,10 @@ import sims.solver.{ClassicStep, SoftStep}
 /** The playground page (`playground/staticSite`) in headless Chromium, used as a person would:
   * the choosers, the buttons and the mouse; its state read through `window.simsPlayground`.
   */
-class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
-  private var chromium: Option[Chromium] = None
-  private def browser: Chromium =
-    assume(Chromium.installed, "Chromium is not installed (apt-get install chromium chromium-driver)")
-    chromium.get
-
-  override def beforeAll(): Unit =
-    if Chromium.installed then
-      chromium = Some(Chromium.open(File(System.getProperty("sims.playground.site"))))
-      val driver = chromium.get.driver
-      driver.get(chromium.get.address("index.html"))
-      WebDriverWait(
-        driver, Duration.ofSeconds(30)).until(d => script("return window.simsPlayground !== undefined") == java.lang.Boolean.TRUE)
-
-  override def afterAll(): Unit = chromium.foreach(_.close())
-
-  private def script(code: String, args: AnyRef*): AnyRef = browser.driver.executeScript(code, args*)
+class PlaygroundBrowserSpec extends AnyFunSuite with ChromiumPage:
+  protected def folder: File = File(System.getProperty("sims.playground.site"))
+  protected def page: String = "index.html"
+  protected def ready: String = "window.simsPlayground !== undefined"
 
   private def number(value: AnyRef): Double = value.asInstanceOf[Number].doubleValue
 
@@ -55,8 +41,7 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
     element("play").click()
 
   test("the page loads with no console errors, shows every scene and both solvers"):
-    val errors = browser.consoleErrors()
-    assert(errors.isEmpty, errors.mkString("\n"))
+    assertNoConsoleErrors()
     val scenes = Select(element("scene")).getOptions.asScala.map(_.getAttribute("value")).toSeq
     assert(scenes == Scenes.all.map(_.name))
     assert(Select(element("solver")).getOptions.asScala.map(_.getAttribute("value")).toSeq == Seq("ClassicStep", "SoftStep"))
@@ -76,8 +61,7 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
     Select(element("scene")).selectByValue("Pyramid")
     assert(Select(element("solver")).getFirstSelectedOption.getAttribute("value") == "ClassicStep")
     assert(Select(element("solver")).getOptions.asScala.forall(_.isEnabled))
-    val errors = browser.consoleErrors()
-    assert(errors.isEmpty, errors.mkString("\n"))
+    assertNoConsoleErrors()
 
   test("the canvas is not blank: the scene's bodies cover a good part of it in several colours"):
     choose("Pyramid", "SoftStep")
@@ -159,26 +143,21 @@ class PlaygroundBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
     assert(number(script("return window.simsPlayground.state().time")) == world.time)
     assert(page == StateFingerprint(world))
 
-  test("five scenes after 600 steps under each step: Chromium's fingerprints are the JVM's and Node's"):
+  /** Five scenes after 600 steps under each step in the page: their fingerprints against the JVM's and Node's. */
+  private def assertPlatformFingerprints(): Unit =
     for (name, (classic, soft)) <- PlatformHashesSpec.Expected do
       assert(script(s"return window.simsPlayground.run('$name', 'ClassicStep', ${PlatformHashesSpec.Steps})") == classic,
         s"$name, ClassicStep")
       assert(script(s"return window.simsPlayground.run('$name', 'SoftStep', ${PlatformHashesSpec.Steps})") == soft,
         s"$name, SoftStep")
-    val errors = browser.consoleErrors()
-    assert(errors.isEmpty, errors.mkString("\n"))
+    assertNoConsoleErrors()
+
+  test("five scenes after 600 steps under each step: Chromium's fingerprints are the JVM's and Node's"):
+    assertPlatformFingerprints()
 
   test("the page runs SiMS linked to WebAssembly; asked for JavaScript, the JavaScript bundle, with the same fingerprints"):
     assert(script("return window.simsPlayground.state().linkedTo") == "WebAssembly")
     assert(element("info").getText.contains("(WebAssembly)"))
-    browser.driver.get(browser.address("index.html?javascript"))
-    WebDriverWait(
-      browser.driver, Duration.ofSeconds(30)).until(d => script("return window.simsPlayground !== undefined") == java.lang.Boolean.TRUE)
+    open("index.html?javascript")
     assert(script("return window.simsPlayground.state().linkedTo") == "JavaScript")
-    for (name, (classic, soft)) <- PlatformHashesSpec.Expected do
-      assert(script(s"return window.simsPlayground.run('$name', 'ClassicStep', ${PlatformHashesSpec.Steps})") == classic,
-        s"$name, ClassicStep")
-      assert(script(s"return window.simsPlayground.run('$name', 'SoftStep', ${PlatformHashesSpec.Steps})") == soft,
-        s"$name, SoftStep")
-    val errors = browser.consoleErrors()
-    assert(errors.isEmpty, errors.mkString("\n"))
+    assertPlatformFingerprints()

@@ -2,9 +2,6 @@ package sims.playground
 
 import java.io.File
 import java.nio.{ByteBuffer, ByteOrder}
-import java.time.Duration
-import org.openqa.selenium.support.ui.WebDriverWait
-import org.scalatest.BeforeAndAfterAll
 import org.scalatest.funsuite.AnyFunSuite
 import sims.scenes.{BenchScenes, LayoutScene}
 import sims.solver.{ClassicStep, SoftStep}
@@ -13,28 +10,16 @@ import sims.solver.{ClassicStep, SoftStep}
   * and to JavaScript (`benchPage`), in headless Chromium (`bits.html` of `benchPage/bundles`): both
   * load, and both compute the JVM's bits.
   */
-class WasmBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
-  private var chromium: Option[Chromium] = None
-  private def browser: Chromium =
-    assume(Chromium.installed, "Chromium is not installed (apt-get install chromium chromium-driver)")
-    chromium.get
-
-  override def beforeAll(): Unit =
-    if Chromium.installed then
-      chromium = Some(Chromium.open(File(System.getProperty("sims.bench.bundles"))))
-      val driver = chromium.get.driver
-      driver.manage().timeouts().scriptTimeout(Duration.ofMinutes(2))
-      driver.get(chromium.get.address("bits.html"))
-      WebDriverWait(driver, Duration.ofSeconds(30)).until(d =>
-        browser.driver.executeScript("return window.simsBundles !== undefined") == java.lang.Boolean.TRUE)
-
-  override def afterAll(): Unit = chromium.foreach(_.close())
+class WasmBrowserSpec extends AnyFunSuite with ChromiumPage:
+  protected def folder: File = File(System.getProperty("sims.bench.bundles"))
+  protected def page: String = "bits.html"
+  protected def ready: String = "window.simsBundles !== undefined"
 
   /** A bench scene's state after `steps` steps in `bundle` ("javascript" or "wasm"): x, y and
     * angle of every body, as the bytes of little-endian doubles in hexadecimal (the sign of a zero included).
     */
   private def pageState(bundle: String, scene: String, solver: String, steps: Int): String =
-    browser.driver.executeScript(
+    script(
       """const [bundle, scene, solver, steps] = arguments;
         |const world = window.simsBundles[bundle].world(scene, solver);
         |for (let i = 0; i < steps; i++) world.step();
@@ -55,9 +40,8 @@ class WasmBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
     buffer.array.map(b => f"${b & 0xff}%02x").mkString
 
   test("both bundles load with no console errors; the WebAssembly one is a module with its binary"):
-    val errors = browser.consoleErrors()
-    assert(errors.isEmpty, errors.mkString("\n"))
-    assert(browser.driver.executeScript("return typeof window.simsBundles.wasm.world") == "function")
+    assertNoConsoleErrors()
+    assert(script("return typeof window.simsBundles.wasm.world") == "function")
     assert(File(System.getProperty("sims.bench.bundles"), "wasm/main.wasm").length > 0)
 
   for (scene, solver) <- Seq(("pyramid-20", "SoftStep"), ("chain-100", "SoftStep"), ("ballpit-500", "SoftStep"),
@@ -67,5 +51,4 @@ class WasmBrowserSpec extends AnyFunSuite with BeforeAndAfterAll:
       val jvm = jvmState(scene, solver, 300)
       assert(pageState("wasm", scene, solver, 300) == jvm)
       assert(pageState("javascript", scene, solver, 300) == jvm)
-      val errors = browser.consoleErrors()
-      assert(errors.isEmpty, errors.mkString("\n"))
+      assertNoConsoleErrors()
