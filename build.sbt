@@ -306,6 +306,25 @@ lazy val bench = (project in file("bench"))
   */
 lazy val staticSite = taskKey[File]("the page and its optimised bundle, in one folder ready for static hosting")
 
+/** A page's twin linked to WebAssembly by Scala.js's WebAssembly backend (an ES module, its loader
+  * and `main.wasm`): the page's sources (the `src` of the folder above the twin's), no tests of its
+  * own. Needs a browser with Wasm GC and exception handling (Chromium 137 or later); Node 20 has no
+  * `exnref`, so the twins are tested in Chromium (`browserTests`), and Node cannot even load one to
+  * look for test frameworks.
+  */
+lazy val wasmTwinSettings = Seq(
+  publish / skip := true,
+  Compile / unmanagedSourceDirectories += baseDirectory.value.getParentFile / "src" / "main" / "scala",
+  scalaJSUseMainModuleInitializer := true,
+  scalaJSLinkerConfig ~= (_.withExperimentalUseWebAssembly(true).withModuleKind(ModuleKind.ESModule)),
+  Test / loadedTestFrameworks := Map.empty,
+  coverageEnabled := false
+)
+
+/** Copies a WebAssembly link's output (the module, its loader and the binary; no source map) into `to`. */
+def copyWasm(linked: File, to: File): Unit =
+  IO.listFiles(linked).filterNot(_.getName.endsWith(".map")).foreach(f => IO.copyFile(f, to / f.getName))
+
 /** The playground: one static page (playground/site) and its bundles, every scene on a canvas:
   * SiMS linked to WebAssembly (`playgroundWasm`, in `wasm/`), which the page runs where the browser
   * can, and to JavaScript (`playground.js`), which it runs elsewhere.
@@ -322,34 +341,26 @@ lazy val playground = (project in file("playground"))
     staticSite := {
       val bundle = (Compile / fullLinkJS).value.data
       val bundleDirectory = (Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
-      (playgroundWasm / Compile / fullLinkJS).value
+      (playgroundWasm / Compile / fullLinkJS).value // linked, into:
       val wasmDirectory = (playgroundWasm / Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
       val out = target.value / "site"
       IO.delete(out)
       IO.copyDirectory(baseDirectory.value / "site", out)
       IO.copyFile(bundleDirectory / bundle.publicModules.head.jsFileName, out / "playground.js")
-      // The module, its loader and the WebAssembly binary (no source map).
-      IO.listFiles(wasmDirectory).filterNot(_.getName.endsWith(".map")).foreach(f => IO.copyFile(f, out / "wasm" / f.getName))
+      copyWasm(wasmDirectory, out / "wasm")
       streams.value.log.info(s"playground: serve $out and open its address, or open ${out / "index.html"} (JavaScript)")
       out
     }
   )
 
-/** The playground linked to WebAssembly by Scala.js's WebAssembly backend: the same sources. */
+/** The playground linked to WebAssembly: the same sources (playground/src). */
 lazy val playgroundWasm = (project in file("playground/wasm"))
   .enablePlugins(ScalaJSPlugin)
   .dependsOn(scenesJS)
+  .settings(wasmTwinSettings)
   .settings(
     name := "sims-playground-wasm",
-    publish / skip := true,
-    // The playground's sources (playground/src), this project being its folder's subfolder.
-    Compile / unmanagedSourceDirectories += baseDirectory.value.getParentFile / "src" / "main" / "scala",
-    scalaJSUseMainModuleInitializer := true,
-    libraryDependencies += "org.scala-js" %%% "scalajs-dom" % "2.8.1",
-    scalaJSLinkerConfig ~= (_.withExperimentalUseWebAssembly(true).withModuleKind(ModuleKind.ESModule)),
-    // No tests of its own, and Node 20 cannot load it to look for test frameworks.
-    Test / loadedTestFrameworks := Map.empty,
-    coverageEnabled := false
+    libraryDependencies += "org.scala-js" %%% "scalajs-dom" % "2.8.1"
   )
 
 /** The playground in headless Chromium (Selenium and Debian's chromium-driver): the page, its
@@ -401,13 +412,12 @@ lazy val benchPage = (project in file("bench/browser"))
     bundles := {
       val bundle = (Compile / fullLinkJS).value.data
       val bundleDirectory = (Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
-      val wasm = (benchPageWasm / Compile / fullLinkJS).value.data
+      (benchPageWasm / Compile / fullLinkJS).value // linked, into:
       val wasmDirectory = (benchPageWasm / Compile / fullLinkJS / scalaJSLinkerOutputDirectory).value
       val out = target.value / "bundles"
       IO.delete(out)
       IO.copyFile(bundleDirectory / bundle.publicModules.head.jsFileName, out / "sims-bench.js")
-      // The module, its loader and the WebAssembly binary (no source map).
-      IO.listFiles(wasmDirectory).filterNot(_.getName.endsWith(".map")).foreach(f => IO.copyFile(f, out / "wasm" / f.getName))
+      copyWasm(wasmDirectory, out / "wasm")
       IO.copyFile(baseDirectory.value / "site" / "bits.html", out / "bits.html")
       out
     },
@@ -426,23 +436,14 @@ lazy val benchPage = (project in file("bench/browser"))
     }
   )
 
-/** The bench page's SiMS linked to WebAssembly by Scala.js's WebAssembly backend (an ES module,
-  * its loader and `main.wasm`): the same sources as `benchPage`, offered to the page as
-  * `simsBenchWasm`. Needs a browser with Wasm GC and exception handling (Chromium 137 or later);
-  * Node 20 has neither, so its tests run in Chromium (`browserTests`).
+/** The bench page's SiMS linked to WebAssembly: the same sources (bench/browser/src), offered to
+  * the page as `simsBenchWasm`.
   */
 lazy val benchPageWasm = (project in file("bench/browser/wasm"))
   .enablePlugins(ScalaJSPlugin)
   .dependsOn(scenesJS)
+  .settings(wasmTwinSettings)
   .settings(
     name := "sims-bench-page-wasm",
-    publish / skip := true,
-    // benchPage's sources (bench/browser/src), this project being its folder's subfolder.
-    Compile / unmanagedSourceDirectories += baseDirectory.value.getParentFile / "src" / "main" / "scala",
-    scalaJSUseMainModuleInitializer := true,
-    Compile / mainClass := Some("sims.benchpage.WasmMain"),
-    scalaJSLinkerConfig ~= (_.withExperimentalUseWebAssembly(true).withModuleKind(ModuleKind.ESModule)),
-    // No tests of its own, and Node 20 cannot load it to look for test frameworks.
-    Test / loadedTestFrameworks := Map.empty,
-    coverageEnabled := false
+    Compile / mainClass := Some("sims.benchpage.WasmMain")
   )
