@@ -30,9 +30,9 @@ object PlatformHashesSpec:
   val Expected: Seq[(String, (String, String))] = Seq(
     "Pyramid" -> ("dd5baa49fafec7ac", "99836b506ac2f1a2"),
     "BallStack" -> ("8db9759ae6989d8b", "988eb6812f8b03ac"),
-    "Ragdoll" -> ("e86196be7f7d6310", "a0ea92f527efb5bf"),
+    "Ragdoll" -> ("e86196be7f7d6310", "340ee00fb33d3048"),
     "Chain" -> ("8abde10dfa3f46b7", "90c9ff7bcca0428f"),
-    "Carriage" -> ("b61f7c5294100851", "d54745d978c2c37c")
+    "Carriage" -> ("b61f7c5294100851", "27ab911b85a560de")
   )
 
   /** Prints the table above for the current code (run with `scenes/Test/runMain`). */

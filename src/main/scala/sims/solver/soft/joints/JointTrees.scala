@@ -24,8 +24,9 @@ import sims.solver.soft.SoftBodies.*
   * joints form no loop through moving bodies. Eliminating nodes leaves first gives
   * D_i = H_ii - sum over children c of H_ic D_c^-1 H_ci, z_i = b_i - sum H_ic D_c^-1 z_c; then
   * from the roots down x_i = D_i^-1 (z_i - H_i,parent x_parent): no fill-in, every block at most
-  * 3 x 3. Joints in loops (nets, trusses) and joints that give no rows (the mouse joint, a
-  * user's) stay with the iterative soft solver.
+  * 3 x 3. The bodies of a chain's links are eliminated before their joints (see `fold`), so
+  * that a chain is solved in its joints' rows alone. Joints in loops (nets, trusses) and joints
+  * that give no rows (the mouse joint, a user's) stay with the iterative soft solver.
   */
 private[sims] final class JointTrees:
   /** The joints of this step left to the iterative solver, in world order. */
@@ -51,6 +52,12 @@ private[sims] final class JointTrees:
   private var z, w, x = new Array[Double](0)
   // Per body node: its body's mass and moment of inertia for this step, at 2 node and 2 node + 1.
   private var bodyMass = new Array[Double](0)
+  // Folding (see `fold`): whether a body node is folded into its joints; per joint node, the node
+  // it is eliminated into and which of its joint's bodies are folded (1: body 1, 2: body 2, 3:
+  // both); per joint node eliminated into a joint, the block between them (k x k', at 4 node).
+  private var nodeFolded = new Array[Boolean](0)
+  private var nodeAbove, nodeFolds, childCount = new Array[Int](0)
+  private var link = new Array[Double](0)
   // The trees: tree k's nodes are treeStart(k) until treeStart(k + 1); whether something else
   // acts on it this step (see `markTouched`).
   private var treeCount = 0
@@ -235,6 +242,9 @@ private[sims] final class JointTrees:
       d = new Array[Double](6 * room); factor = new Array[Double](6 * room)
       z = new Array[Double](3 * room); w = new Array[Double](3 * room); x = new Array[Double](3 * room)
       bodyMass = new Array[Double](2 * room)
+      nodeFolded = new Array[Boolean](room)
+      nodeAbove = new Array[Int](room); nodeFolds = new Array[Int](room); childCount = new Array[Int](room)
+      link = new Array[Double](4 * room)
     java.util.Arrays.fill(bodyNode, 0, n, -1)
     if jointSeen.length < joints then jointSeen = new Array[Boolean](2 * joints)
     java.util.Arrays.fill(jointSeen, 0, joints, false)
@@ -260,6 +270,36 @@ private[sims] final class JointTrees:
       t += 1
     treeStart(treeCount) = nodeCount
     if treeTouched.length < treeCount then treeTouched = new Array[Boolean](2 * treeCount)
+    fold()
+
+  /** Folds every body that is not a tree's root and holds at most one joint below it (a chain's
+    * link, a leaf) into its joints: its mass matrix is diagonal, so it is eliminated first, at no
+    * cost, and its joints meet directly (its joint below is eliminated into its joint above,
+    * through a block -J_below M^-1 J_above^T, and each joint's own block gains -J M^-1 J^T). A
+    * chain is then solved in its joints' rows alone, 2 x 2 blocks instead of a 3 x 3 block per
+    * link. Bodies where the tree branches stay nodes of their own: folded, they would couple all
+    * their joints at once.
+    */
+  private def fold(): Unit =
+    java.util.Arrays.fill(childCount, 0, nodeCount, 0)
+    var node = 0
+    while node < nodeCount do
+      if nodeParent(node) >= 0 then childCount(nodeParent(node)) += 1
+      node += 1
+    node = 0
+    while node < nodeCount do
+      nodeFolded(node) = !nodeIsJoint(node) && nodeParent(node) >= 0 && childCount(node) <= 1
+      node += 1
+    node = 0
+    while node < nodeCount do
+      val parent = nodeParent(node)
+      nodeAbove(node) = if parent >= 0 && nodeFolded(parent) then nodeParent(parent) else parent
+      if nodeIsJoint(node) then
+        val joint = nodeRef(node)
+        nodeFolds(node) = (if folded(body1(joint)) then 1 else 0) | (if folded(body2(joint)) then 2 else 0)
+      node += 1
+
+  private def folded(body: Int): Boolean = body >= 0 && nodeFolded(bodyNode(body))
 
   /** The root of the tree holding `element` (a body b < n or a joint n + t): its joint to the
     * ground if it has one, else its centre, the middle of a longest path, found by two sweeps
@@ -454,11 +494,12 @@ private[sims] final class JointTrees:
           val fresh = useBias && !treeTouched(tree)
           setUp(context, state, useBias, fresh, from, until)
           eliminate(from, until)
-          substitute(state, fresh, from, until)
+          substitute(context.bodies, state, fresh, from, until)
         tree += 1
 
   /** Each node's block of H and right side: a body's mass matrix and 0; a joint's -G (its
-    * compliance, in the solve pass) and -(Cdot + bias + G lambdaAcc).
+    * compliance, in the solve pass) less its folded bodies' J M^-1 J^T, and -(Cdot + bias + G
+    * lambdaAcc); the block between a joint and the joint above it (see `fold`).
     */
   private def setUp(context: SoftContext, state: Array[Double], useBias: Boolean, fresh: Boolean, from: Int,
       until: Int): Unit =
@@ -485,25 +526,32 @@ private[sims] final class JointTrees:
         val s2 = index2(joint) * SoftBodies.Stride
         val m1 = bodies.invMass(index1(joint)); val i1 = bodies.invI(index1(joint))
         val m2 = bodies.invMass(index2(joint)); val i2 = bodies.invI(index2(joint))
+        // Each body's share of K that D takes: the compliance's, and all of a folded body's.
+        val folds = nodeFolds(node)
+        val share1 = if (folds & 1) != 0 then 1 + compliance else compliance
+        val share2 = if (folds & 2) != 0 then 1 + compliance else compliance
         val accumulated = direct(joint).impulse
         val acc0 = if fresh then 0.0 else accumulated(0)
         val cdot0 = rowVelocity(j1, state, s1) + rowVelocity(j2, state, s2)
         val bias0 = if useBias then positionError(2 * joint) * inverseH else 0.0
-        if nodeSize(node) == 1 then
-          val g00 = compliance * (coupling(j1, j1, m1, i1) + coupling(j2, j2, m2, i2))
-          d(o) = -g00
-          z(v) = -(cdot0 + bias0 + g00 * acc0)
+        val a00 = coupling(j1, j1, m1, i1); val b00 = coupling(j2, j2, m2, i2)
+        val g00 = compliance * (a00 + b00)
+        d(o) = -(share1 * a00 + share2 * b00)
+        if nodeSize(node) == 1 then z(v) = -(cdot0 + bias0 + g00 * acc0)
         else
           val cdot1 = rowVelocity(j1 + 3, state, s1) + rowVelocity(j2 + 3, state, s2)
           val bias1 = if useBias then positionError(2 * joint + 1) * inverseH else 0.0
-          val g00 = compliance * (coupling(j1, j1, m1, i1) + coupling(j2, j2, m2, i2))
-          val g01 = compliance * (coupling(j1, j1 + 3, m1, i1) + coupling(j2, j2 + 3, m2, i2))
-          val g11 = compliance * (coupling(j1 + 3, j1 + 3, m1, i1) + coupling(j2 + 3, j2 + 3, m2, i2))
+          val a01 = coupling(j1, j1 + 3, m1, i1); val b01 = coupling(j2, j2 + 3, m2, i2)
+          val a11 = coupling(j1 + 3, j1 + 3, m1, i1); val b11 = coupling(j2 + 3, j2 + 3, m2, i2)
+          val g01 = compliance * (a01 + b01)
+          val g11 = compliance * (a11 + b11)
           val acc1 = if fresh then 0.0 else accumulated(1)
-          d(o) = -g00; d(o + 1) = -g01; d(o + 3) = -g11
+          d(o + 1) = -(share1 * a01 + share2 * b01); d(o + 3) = -(share1 * a11 + share2 * b11)
           z(v) = -(cdot0 + bias0 + g00 * acc0 + g01 * acc1)
           z(v + 1) = -(cdot1 + bias1 + g01 * acc0 + g11 * acc1)
-      else
+        val above = nodeAbove(node)
+        if above >= 0 && nodeIsJoint(above) then setLink(bodies, node, above)
+      else if !nodeFolded(node) then
         val mass = bodyMass(2 * node)
         d(o) = mass; d(o + 1) = 0; d(o + 2) = 0
         d(o + 3) = mass; d(o + 4) = 0
@@ -511,60 +559,60 @@ private[sims] final class JointTrees:
         z(v) = 0; z(v + 1) = 0; z(v + 2) = 0
       node += 1
 
+  /** The block B between joint node `node` and the joint node `above` it, through the folded
+    * body between them: -J M^-1 J_above^T, B(r, q) at 4 node + 2 r + q (0 where either joint
+    * has one row).
+    */
+  private def setLink(bodies: SoftBodies, node: Int, above: Int): Unit =
+    val body = nodeParent(node)
+    val m = bodies.invMass(nodeRef(body)); val i = bodies.invI(nodeRef(body))
+    val below = nodeJacobian(node) // this joint's rows for the body
+    val over = nodeJacobian(body) // the joint above's rows for it
+    val two = nodeSize(above) == 2
+    val l = 4 * node
+    link(l) = -coupling(below, over, m, i)
+    link(l + 1) = if two then -coupling(below, over + 3, m, i) else 0.0
+    if nodeSize(node) == 2 then
+      link(l + 2) = -coupling(below + 3, over, m, i)
+      link(l + 3) = if two then -coupling(below + 3, over + 3, m, i) else 0.0
+    else
+      link(l + 2) = 0.0
+      link(l + 3) = 0.0
+
   /** Leaves first: each node's D is final once its children are eliminated; it is inverted and
-    * eliminated into its parent: D_p -= H_pc D_c^-1 H_cp and z_p -= H_pc D_c^-1 z_c, where H_pc
-    * is J^T (3 x k) for a joint below a body and J (k x 3) for a body below a joint. Kept for
-    * the substitution: w_c = D_c^-1 z_c, and the factor D_c^-1 J (a joint) or J D_c^-1 (a body).
-    * Blocks are symmetric, stored as their upper triangle: (0, 0) (0, 1) (0, 2) (1, 1) (1, 2) (2, 2)
-    * at offsets 0 to 5 (a 2 x 2 block uses 0, 1 and 3). Every pivot is regular: a body's D is its
-    * mass matrix plus what its subtree adds (positive definite), a joint's -J D^-1 J^T of the
-    * bodies below it, which a joint to the ground only has as its tree's root.
+    * eliminated into the node above it: D_p -= H_pc D_c^-1 H_cp and z_p -= H_pc D_c^-1 z_c, where
+    * H_pc is J^T (3 x k) for a joint below a body, J (k x 3) for a body below a joint, and B^T for
+    * a joint below a joint (see `fold`). Kept for the substitution: w_c = D_c^-1 z_c, and the
+    * factor D_c^-1 J or D_c^-1 B (a joint) or J D_c^-1 (a body). Blocks are symmetric, stored as
+    * their upper triangle: (0, 0) (0, 1) (0, 2) (1, 1) (1, 2) (2, 2) at offsets 0 to 5 (a 2 x 2
+    * block uses 0, 1 and 3). Every pivot is regular: a body's D is its mass matrix plus what its
+    * subtree adds (positive definite), a joint's -J D^-1 J^T of the bodies below it and its
+    * folded bodies' -J M^-1 J^T, which a joint to the ground only lacks as its tree's root.
     */
   private def eliminate(from: Int, until: Int): Unit =
     var node = until - 1
     while node >= from do
       val o = 6 * node
       val v = 3 * node
-      val parent = nodeParent(node)
-      val jo = nodeJacobian(node)
       if nodeIsJoint(node) then
-        if nodeSize(node) == 1 then
-          val a = d(o)
-          val inverse = if a != 0 then 1 / a else 0.0
-          val y = inverse * z(v)
-          w(v) = y
-          if parent >= 0 then
-            val p = 6 * parent
-            val pv = 3 * parent
-            val j0 = jacobians(jo); val j1 = jacobians(jo + 1); val j2 = jacobians(jo + 2)
-            val g0 = inverse * j0; val g1 = inverse * j1; val g2 = inverse * j2
-            factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
-            // D_p -= J^T G, z_p -= J^T y
-            d(p) -= j0 * g0; d(p + 1) -= j0 * g1; d(p + 2) -= j0 * g2
-            d(p + 3) -= j1 * g1; d(p + 4) -= j1 * g2; d(p + 5) -= j2 * g2
-            z(pv) -= j0 * y; z(pv + 1) -= j1 * y; z(pv + 2) -= j2 * y
-        else
+        // D^-1, symmetric: i00, i01, i11 (i00 alone for one row); a singular block gives 0.
+        val two = nodeSize(node) == 2
+        var i00, i01, i11 = 0.0
+        if two then
           val a = d(o); val b = d(o + 1); val c = d(o + 3)
           var det = a * c - b * b
           if det != 0 then det = 1 / det
-          val i00 = c * det; val i01 = -b * det; val i11 = a * det
-          val y0 = i00 * z(v) + i01 * z(v + 1)
-          val y1 = i01 * z(v) + i11 * z(v + 1)
-          w(v) = y0; w(v + 1) = y1
-          if parent >= 0 then
-            val p = 6 * parent
-            val pv = 3 * parent
-            val a0 = jacobians(jo); val a1 = jacobians(jo + 1); val a2 = jacobians(jo + 2)
-            val b0 = jacobians(jo + 3); val b1 = jacobians(jo + 4); val b2 = jacobians(jo + 5)
-            // G = D^-1 J, rows g and h
-            val g0 = i00 * a0 + i01 * b0; val g1 = i00 * a1 + i01 * b1; val g2 = i00 * a2 + i01 * b2
-            val h0 = i01 * a0 + i11 * b0; val h1 = i01 * a1 + i11 * b1; val h2 = i01 * a2 + i11 * b2
-            factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
-            factor(o + 3) = h0; factor(o + 4) = h1; factor(o + 5) = h2
-            d(p) -= a0 * g0 + b0 * h0; d(p + 1) -= a0 * g1 + b0 * h1; d(p + 2) -= a0 * g2 + b0 * h2
-            d(p + 3) -= a1 * g1 + b1 * h1; d(p + 4) -= a1 * g2 + b1 * h2; d(p + 5) -= a2 * g2 + b2 * h2
-            z(pv) -= a0 * y0 + b0 * y1; z(pv + 1) -= a1 * y0 + b1 * y1; z(pv + 2) -= a2 * y0 + b2 * y1
-      else
+          i00 = c * det; i01 = -b * det; i11 = a * det
+        else if d(o) != 0 then i00 = 1 / d(o)
+        val z0 = z(v); val z1 = if two then z(v + 1) else 0.0
+        val y0 = i00 * z0 + i01 * z1
+        val y1 = i01 * z0 + i11 * z1
+        w(v) = y0; w(v + 1) = y1
+        val above = nodeAbove(node)
+        if above >= 0 then
+          if nodeIsJoint(above) then eliminateIntoJoint(node, above, i00, i01, i11, y0, y1)
+          else eliminateIntoBody(node, above, i00, i01, i11, y0, y1)
+      else if !nodeFolded(node) then
         // The symmetric 3 x 3 inverse by cofactors (a singular block gives 0).
         val a = d(o); val b = d(o + 1); val c = d(o + 2); val e = d(o + 3); val f = d(o + 4); val i = d(o + 5)
         val c00 = e * i - f * f; val c01 = c * f - b * i; val c02 = b * f - c * e
@@ -576,10 +624,12 @@ private[sims] final class JointTrees:
         w(v) = i00 * z0 + i01 * z1 + i02 * z2
         w(v + 1) = i01 * z0 + i11 * z1 + i12 * z2
         w(v + 2) = i02 * z0 + i12 * z1 + i22 * z2
+        val parent = nodeParent(node)
         if parent >= 0 then
           val p = 6 * parent
           val pv = 3 * parent
           // F = J D^-1 (k x 3); D_p -= F J^T, z_p -= F z
+          val jo = nodeJacobian(node)
           val a0 = jacobians(jo); val a1 = jacobians(jo + 1); val a2 = jacobians(jo + 2)
           val f0 = a0 * i00 + a1 * i01 + a2 * i02
           val f1 = a0 * i01 + a1 * i11 + a2 * i12
@@ -598,33 +648,104 @@ private[sims] final class JointTrees:
             z(pv + 1) -= h0 * z0 + h1 * z1 + h2 * z2
       node -= 1
 
-  /** Roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the factor) x_p; then the velocities
-    * change by their bodies' x, each joint's accumulated impulse by -x.
+  /** Joint node `node` (D^-1 = (i00, i01; i01, i11), y = D^-1 z) into the joint node `above`,
+    * through the block B (see `setLink`): G = D^-1 B kept, D_above -= B^T G, z_above -= B^T y.
+    * (Where either has one row, B's other entries are 0: so are G's and the updates'.)
     */
-  private def substitute(state: Array[Double], fresh: Boolean, from: Int, until: Int): Unit =
+  private def eliminateIntoJoint(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
+      y1: Double): Unit =
+    val l = 4 * node
+    val o = 6 * node
+    val p = 6 * above
+    val pv = 3 * above
+    val b00 = link(l)
+    if nodeSize(node) == 1 && nodeSize(above) == 1 then
+      // A chain of one-row joints (distance joints): scalars.
+      val g00 = i00 * b00
+      factor(o) = g00
+      d(p) -= b00 * g00
+      z(pv) -= b00 * y0
+    else
+      val b01 = link(l + 1); val b10 = link(l + 2); val b11 = link(l + 3)
+      val g00 = i00 * b00 + i01 * b10; val g01 = i00 * b01 + i01 * b11
+      val g10 = i01 * b00 + i11 * b10; val g11 = i01 * b01 + i11 * b11
+      factor(o) = g00; factor(o + 1) = g01; factor(o + 2) = g10; factor(o + 3) = g11
+      d(p) -= b00 * g00 + b10 * g10
+      d(p + 1) -= b00 * g01 + b10 * g11
+      d(p + 3) -= b01 * g01 + b11 * g11
+      z(pv) -= b00 * y0 + b10 * y1
+      z(pv + 1) -= b01 * y0 + b11 * y1
+
+  /** Joint node `node` (D^-1 = (i00, i01; i01, i11), y = D^-1 z) into the body node `above`: G =
+    * D^-1 J kept, D_above -= J^T G, z_above -= J^T y.
+    */
+  private def eliminateIntoBody(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
+      y1: Double): Unit =
+    val o = 6 * node
+    val p = 6 * above
+    val pv = 3 * above
+    val jo = nodeJacobian(node)
+    val a0 = jacobians(jo); val a1 = jacobians(jo + 1); val a2 = jacobians(jo + 2)
+    if nodeSize(node) == 1 then
+      val g0 = i00 * a0; val g1 = i00 * a1; val g2 = i00 * a2
+      factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
+      d(p) -= a0 * g0; d(p + 1) -= a0 * g1; d(p + 2) -= a0 * g2
+      d(p + 3) -= a1 * g1; d(p + 4) -= a1 * g2; d(p + 5) -= a2 * g2
+      z(pv) -= a0 * y0; z(pv + 1) -= a1 * y0; z(pv + 2) -= a2 * y0
+    else
+      val b0 = jacobians(jo + 3); val b1 = jacobians(jo + 4); val b2 = jacobians(jo + 5)
+      // G = D^-1 J, rows g and h
+      val g0 = i00 * a0 + i01 * b0; val g1 = i00 * a1 + i01 * b1; val g2 = i00 * a2 + i01 * b2
+      val h0 = i01 * a0 + i11 * b0; val h1 = i01 * a1 + i11 * b1; val h2 = i01 * a2 + i11 * b2
+      factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
+      factor(o + 3) = h0; factor(o + 4) = h1; factor(o + 5) = h2
+      d(p) -= a0 * g0 + b0 * h0; d(p + 1) -= a0 * g1 + b0 * h1; d(p + 2) -= a0 * g2 + b0 * h2
+      d(p + 3) -= a1 * g1 + b1 * h1; d(p + 4) -= a1 * g2 + b1 * h2; d(p + 5) -= a2 * g2 + b2 * h2
+      z(pv) -= a0 * y0 + b0 * y1; z(pv + 1) -= a1 * y0 + b1 * y1; z(pv + 2) -= a2 * y0 + b2 * y1
+
+  /** Roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the factor) x_p; then the velocities
+    * change by their bodies' x (a folded body's by -M^-1 J^T x of its joints), each joint's
+    * accumulated impulse by -x.
+    */
+  private def substitute(bodies: SoftBodies, state: Array[Double], fresh: Boolean, from: Int, until: Int): Unit =
     var node = from
     while node < until do
       val o = 6 * node
       val v = 3 * node
-      val parent = nodeParent(node)
       if nodeIsJoint(node) then
-        val accumulated = direct(nodeRef(node)).impulse
-        if parent < 0 then
+        val two = nodeSize(node) == 2
+        val above = nodeAbove(node)
+        if above < 0 then
           x(v) = w(v)
-          if nodeSize(node) == 2 then x(v + 1) = w(v + 1)
+          if two then x(v + 1) = w(v + 1)
         else
-          // x = w - G x_p
-          val pv = 3 * parent
-          val p0 = x(pv); val p1 = x(pv + 1); val p2 = x(pv + 2)
-          x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1 + factor(o + 2) * p2)
-          if nodeSize(node) == 2 then x(v + 1) = w(v + 1) - (factor(o + 3) * p0 + factor(o + 4) * p1 + factor(o + 5) * p2)
+          val pv = 3 * above
+          if nodeIsJoint(above) then
+            // x = w - G x_above
+            if !two && nodeSize(above) == 1 then x(v) = w(v) - factor(o) * x(pv)
+            else
+              val p0 = x(pv); val p1 = if nodeSize(above) == 2 then x(pv + 1) else 0.0
+              x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1)
+              if two then x(v + 1) = w(v + 1) - (factor(o + 2) * p0 + factor(o + 3) * p1)
+          else
+            // x = w - G x_above
+            val p0 = x(pv); val p1 = x(pv + 1); val p2 = x(pv + 2)
+            x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1 + factor(o + 2) * p2)
+            if two then x(v + 1) = w(v + 1) - (factor(o + 3) * p0 + factor(o + 4) * p1 + factor(o + 5) * p2)
+        val joint = nodeRef(node)
+        val accumulated = direct(joint).impulse
+        val x0 = x(v); val x1 = if two then x(v + 1) else 0.0
         if fresh then
-          accumulated(0) = -x(v)
-          if nodeSize(node) == 2 then accumulated(1) = -x(v + 1)
+          accumulated(0) = -x0
+          if two then accumulated(1) = -x1
         else
-          accumulated(0) -= x(v)
-          if nodeSize(node) == 2 then accumulated(1) -= x(v + 1)
-      else
+          accumulated(0) -= x0
+          if two then accumulated(1) -= x1
+        val folds = nodeFolds(node)
+        if (folds & 1) != 0 then push(bodies, state, index1(joint), 12 * joint, two, x0, x1)
+        if (folds & 2) != 0 then push(bodies, state, index2(joint), 12 * joint + 6, two, x0, x1)
+      else if !nodeFolded(node) then
+        val parent = nodeParent(node)
         if parent < 0 then
           x(v) = w(v); x(v + 1) = w(v + 1); x(v + 2) = w(v + 2)
         else
@@ -643,6 +764,19 @@ private[sims] final class JointTrees:
         val k = nodeRef(node) * SoftBodies.Stride
         state(k + VelocityX) += x(v); state(k + VelocityY) += x(v + 1); state(k + AngularVelocity) += x(v + 2)
       node += 1
+
+  /** A folded body's share of its joint's solution: dv = -M^-1 J^T x, J the joint's rows for the
+    * body at `rows` (the second row only when `two`).
+    */
+  private def push(bodies: SoftBodies, state: Array[Double], body: Int, rows: Int, two: Boolean, x0: Double,
+      x1: Double): Unit =
+    val m = bodies.invMass(body)
+    val i = bodies.invI(body)
+    var fx = jacobians(rows) * x0; var fy = jacobians(rows + 1) * x0; var torque = jacobians(rows + 2) * x0
+    if two then
+      fx += jacobians(rows + 3) * x1; fy += jacobians(rows + 4) * x1; torque += jacobians(rows + 5) * x1
+    val k = body * SoftBodies.Stride
+    state(k + VelocityX) -= m * fx; state(k + VelocityY) -= m * fy; state(k + AngularVelocity) -= i * torque
 
   /** Rows at r and q of a joint's Jacobian for one body through that body's inverse mass: its
     * part of the joint's own effective mass matrix J M^-1 J^T.
