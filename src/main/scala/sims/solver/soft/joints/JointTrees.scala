@@ -68,6 +68,9 @@ private[sims] final class JointTrees:
   private var laidOut = new Array[JointConstraint](0)
   private var laidOutKey = new Array[Int](0)
   private var laidOutCount = -1
+  // This step's direct joints whose limits, motor or spring Gauss-Seidel solves, in order.
+  private var axial = new Array[JointConstraint](0)
+  private var axialCount = 0
   // Bodies in a contact or an iterative joint this step: the stamp of the step that marked them.
   private var bodyMark = new Array[Int](0)
   private var markStamp = 0
@@ -409,6 +412,7 @@ private[sims] final class JointTrees:
     */
   def markTouched(contacts: Contacts, bodies: SoftBodies): Unit =
     takeMasses(bodies)
+    listAxial()
     if treeCount > 0 then
       if bodyMark.length < bodies.count then bodyMark = new Array[Int](2 * bodies.count)
       markStamp += 1
@@ -433,6 +437,18 @@ private[sims] final class JointTrees:
           node += 1
         treeTouched(tree) = needed
         tree += 1
+
+  /** The direct joints with rows for Gauss-Seidel this step: the passes call no one else's. */
+  private def listAxial(): Unit =
+    if axial.length < direct.length then axial = new Array[JointConstraint](2 * direct.length)
+    java.util.Arrays.fill(axial.asInstanceOf[Array[AnyRef]], 0, axialCount, null)
+    axialCount = 0
+    var t = 0
+    while t < direct.length do
+      if direct(t).solvesAxial then
+        axial(axialCount) = direct(t)
+        axialCount += 1
+      t += 1
 
   /** Each body node's mass and moment of inertia for this step's passes. */
   private def takeMasses(bodies: SoftBodies): Unit =
@@ -474,8 +490,8 @@ private[sims] final class JointTrees:
       // The rows the trees leave to Gauss-Seidel first, as a joint solved iteratively does
       // before its own point constraint.
       var t = 0
-      while t < direct.length do
-        direct(t).solveAxial(context, useBias)
+      while t < axialCount do
+        axial(t).solveAxial(context, useBias)
         t += 1
       val state = context.bodies.state
       var tree = 0
