@@ -450,11 +450,13 @@ private[sims] final class JointTrees:
         axialCount += 1
       t += 1
 
-  /** Each body node's mass and moment of inertia for this step's passes. */
+  /** Each body node's mass and moment of inertia for this step's passes (a folded body's are
+    * not used: its inverses are).
+    */
   private def takeMasses(bodies: SoftBodies): Unit =
     var node = 0
     while node < nodeCount do
-      if !nodeIsJoint(node) then
+      if !nodeIsJoint(node) && !nodeFolded(node) then
         val b = nodeRef(node)
         bodyMass(2 * node) = 1 / bodies.invMass(b)
         bodyMass(2 * node + 1) = 1 / bodies.invI(b)
