@@ -38,6 +38,8 @@ private[sims] final class JointTrees:
   // 12 t, for body 2 at 12 t + 6, written by the joints' `rowsAt`) and errors (at 2 t).
   private var body1, body2, index1, index2, rowCount = new Array[Int](0)
   private var jacobians = new Array[Double](0)
+  // Per direct joint t: its constraint's accumulated impulses (the passes read and write them).
+  private var impulses = new Array[Array[Double]](0)
   private var positionError = new Array[Double](0)
   // The elimination tree, nodes in breadth-first order from each root: kind (body or joint),
   // the body index or joint number, size, parent node (-1 for a root), and the offset in
@@ -207,6 +209,8 @@ private[sims] final class JointTrees:
       index1 = new Array[Int](2 * joints); index2 = new Array[Int](2 * joints)
       jacobians = new Array[Double](24 * joints)
       positionError = new Array[Double](4 * joints)
+      impulses = new Array[Array[Double]](2 * joints)
+    java.util.Arrays.fill(impulses.asInstanceOf[Array[AnyRef]], joints, impulses.length, null) // no joint that left
     var t = 0
     while t < joints do
       body1(t) = moving(direct(t).joint.node1, bodies)
@@ -214,6 +218,7 @@ private[sims] final class JointTrees:
       index1(t) = direct(t).joint.node1.index
       index2(t) = direct(t).joint.node2.index
       rowCount(t) = direct(t).directRows
+      impulses(t) = direct(t).impulse
       t += 1
     // Incidence lists of the bodies (joints in order), in compressed arrays.
     val n = bodies.count
@@ -548,7 +553,7 @@ private[sims] final class JointTrees:
         val folds = nodeFolds(node)
         val share1 = if (folds & 1) != 0 then 1 + compliance else compliance
         val share2 = if (folds & 2) != 0 then 1 + compliance else compliance
-        val accumulated = direct(joint).impulse
+        val accumulated = impulses(joint)
         val acc0 = if fresh then 0.0 else accumulated(0)
         val cdot0 = rowVelocity(j1, state, s1) + rowVelocity(j2, state, s2)
         val bias0 = if useBias then positionError(2 * joint) * inverseH else 0.0
@@ -751,7 +756,7 @@ private[sims] final class JointTrees:
             x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1 + factor(o + 2) * p2)
             if two then x(v + 1) = w(v + 1) - (factor(o + 3) * p0 + factor(o + 4) * p1 + factor(o + 5) * p2)
         val joint = nodeRef(node)
-        val accumulated = direct(joint).impulse
+        val accumulated = impulses(joint)
         val x0 = x(v); val x1 = if two then x(v + 1) else 0.0
         if fresh then
           accumulated(0) = -x0
