@@ -300,9 +300,9 @@ private[sims] final class JointTrees:
       node += 1
     node = 0
     while node < nodeCount do
-      val parent = nodeParent(node)
-      nodeAbove(node) = if parent >= 0 && nodeFolded(parent) then nodeParent(parent) else parent
       if nodeIsJoint(node) then
+        val parent = nodeParent(node)
+        nodeAbove(node) = if parent >= 0 && nodeFolded(parent) then nodeParent(parent) else parent
         val joint = nodeRef(node)
         nodeFolds(node) = (if folded(body1(joint)) then 1 else 0) | (if folded(body2(joint)) then 2 else 0)
       node += 1
