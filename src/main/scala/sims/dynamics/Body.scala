@@ -156,6 +156,13 @@ final class Body(initialShapes: Shape*):
           angle + relativeAngle(i))
         i += 1
 
+  /** Computes the bounds its shapes cache now (see `Shape.refreshBounds`). */
+  private[sims] def refreshShapeBounds(): Unit =
+    var i = 0
+    while i < shapeArray.length do
+      shapeArray(i).refreshBounds()
+      i += 1
+
   /** Moves and rotates the body by the given amounts (solver use: no checks, no allocation). */
   private[sims] def displace(dx: Double, dy: Double, dAngle: Double): Unit =
     if dx != 0 || dy != 0 || dAngle != 0 then

@@ -30,6 +30,8 @@ abstract class Polygon(localVertices: IndexedSeq[Vector2D]) extends Shape with C
 
   override private[sims] def refreshCaches(): Unit = refreshNormals()
 
+  override private[sims] def refreshBounds(): Unit = refresh()
+
   /** Recomputes world vertices and bounds if the shape moved since the last call. */
   private def refresh(): Unit =
     if !current then

@@ -26,6 +26,8 @@ abstract class RoundedSegment private[sims] () extends Shape:
 
   override private[sims] def refreshCaches(): Unit = refresh()
 
+  override private[sims] def refreshBounds(): Unit = refresh()
+
   private def refresh(): Unit =
     if !current then
       val ux = PortableMath.cos(angle)

@@ -201,6 +201,12 @@ abstract class Shape:
     */
   private[sims] def refreshCaches(): Unit = ()
 
+  /** Computes the bounds the shape caches (a polygon's world vertices and box) now, if it moved
+    * since: a stage that moves many bodies at once on several threads leaves them current for
+    * the broadphase, which then only reads them.
+    */
+  private[sims] def refreshBounds(): Unit = ()
+
   /** Lowest projection of the shape on the unit axis (ax, ay) (allocation-free). */
   private[sims] def projectMin(ax: Double, ay: Double): Double = project(Vector2D(ax, ay)).lower
   /** Highest projection of the shape on the unit axis (ax, ay). */

@@ -172,7 +172,7 @@ final case class SoftStep(
 
   private def loadBodies(world: World, workspace: SoftWorkspace, h: Double): Unit =
     val bodies = workspace.bodies
-    bodies.load(world.bodyList, h)
+    workspace.passes.load(pool, world.bodyList, h)
     if bodies.anyAsleep then wakeJointed(world, bodies)
     workspace.joints.sort(world, bodies, directJoints)
 
@@ -311,14 +311,16 @@ final case class SoftStep(
       Defaults.RestitutionIterations, Defaults.RestitutionTolerance, world.gravity.x, world.gravity.y, h)
 
   private def finish(world: World, workspace: SoftWorkspace): Unit =
-    workspace.bodies.finish()
+    val finite = workspace.passes.finish(pool)
     val joints = workspace.joints.constraints
     var i = 0
     while i < joints.length do
       joints(i).report(workspace.context.inverseH)
       i += 1
-    world.guard("soft step substeps", Checked.Velocities)
-    world.guard("soft step substeps", Checked.Positions)
+    if !finite then
+      // The guard names the first body that is not finite, and fails the step.
+      world.guard("soft step substeps", Checked.Velocities)
+      world.guard("soft step substeps", Checked.Positions)
     if world.enableContactEvents then
       workspace.passes.reportTouching(pool, world.contactTracker)
     workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)

@@ -9,7 +9,7 @@ import sims.dynamics.Body
   * Positions are not moved during the substeps: each body keeps its placement at the start of
   * the step and accumulates its displacement (dx, dy) and turn (dAngle) since then, with the
   * turn's cosine and sine, from which contacts compute their current separation without a
-  * narrowphase. `finish` writes the bodies back and places their shapes once.
+  * narrowphase. `finishRange` writes the bodies back and places their shapes once.
   */
 private[sims] final class SoftBodies:
   import SoftBodies.*
@@ -42,19 +42,26 @@ private[sims] final class SoftBodies:
   /** Whether some body has a damping (the substeps then apply the decays). */
   var anyDamped: Boolean = false
 
-  /** Takes the state of the world's bodies at the start of a step whose substeps last `h`. */
-  def load(list: ArrayBuffer[Body], h: Double): Unit =
+  /** Makes room for the bodies of `list`, whose state at the start of a step `loadRange` takes
+    * (in one range or several) and `loaded` ends.
+    */
+  def begin(list: ArrayBuffer[Body]): Unit =
     count = list.length
     if bodies.length < count then grow(math.max(count, 2 * bodies.length))
-    anyAsleep = false
-    anyDamped = false
-    var i = 0
-    while i < count do
+
+  /** Takes the state of bodies `from` until `until` of `list`; returns `Asleep` if
+    * one of them sleeps, plus `Damped` if one has a damping. Writes those bodies' slots only:
+    * ranges may be taken on several threads at once.
+    */
+  def loadRange(list: ArrayBuffer[Body], h: Double, from: Int, until: Int): Int =
+    var flags = 0
+    var i = from
+    while i < until do
       val b = list(i)
       if bodies(i) ne b then bodies(i) = b // no write barrier for the same body as last step
       gravityScale(i) = b.gravityScale
       if b.damped then
-        anyDamped = true
+        flags |= Damped
         linearDecay(i) = 1 / (1 + h * b.linearDamping)
         angularDecay(i) = 1 / (1 + h * b.angularDamping)
       else
@@ -66,13 +73,19 @@ private[sims] final class SoftBodies:
       state(k + TurnCos) = 1; state(k + TurnSin) = 0
       val sleeping = !b.isAwake
       asleep(i) = sleeping
-      if sleeping then anyAsleep = true
+      if sleeping then flags |= Asleep
       invMass(i) = if sleeping then 0 else b.invMass
       invI(i) = if sleeping then 0 else b.invI
       startX(i) = b.x; startY(i) = b.y; startAngle(i) = b.angle
       forceX(i) = b.fx; forceY(i) = b.fy; torque(i) = b.tau
       substepForceX(i) = b.fx; substepForceY(i) = b.fy; substepTorque(i) = b.tau
       i += 1
+    flags
+
+  /** Ends the loading: `flags`, every range's of `loadRange` or-ed together. */
+  def loaded(flags: Int): Unit =
+    anyAsleep = (flags & Asleep) != 0
+    anyDamped = (flags & Damped) != 0
 
   /** Wakes every body asleep in `island`: it takes part in the step from now on. */
   def wakeIsland(island: Long): Unit =
@@ -125,12 +138,15 @@ private[sims] final class SoftBodies:
     val k = i * Stride
     state(k + VelocityX) = b.vx; state(k + VelocityY) = b.vy; state(k + AngularVelocity) = b.w
 
-  /** Ends the step: every body gets its new velocities and placement, its shapes are placed,
-    * and forces are cleared.
+  /** Ends the step for bodies `from` until `until`: each gets its new velocities and placement,
+    * its shapes are placed (and their bounds computed, see `Shape.refreshBounds`), its forces
+    * cleared. Returns whether their velocities and placements are all finite. Writes those
+    * bodies and their shapes only: ranges may be finished on several threads at once.
     */
-  def finish(): Unit =
-    var i = 0
-    while i < count do
+  def finishRange(from: Int, until: Int): Boolean =
+    var sum = 0.0
+    var i = from
+    while i < until do
       val b = bodies(i)
       val k = i * Stride
       b.vx = state(k + VelocityX); b.vy = state(k + VelocityY); b.w = state(k + AngularVelocity)
@@ -138,8 +154,14 @@ private[sims] final class SoftBodies:
       b.y = startY(i) + state(k + ShiftY)
       b.angle = startAngle(i) + state(k + Turn)
       b.fx = 0; b.fy = 0; b.tau = 0
-      if state(k + ShiftX) != 0 || state(k + ShiftY) != 0 || state(k + Turn) != 0 then b.placeShapes()
+      if state(k + ShiftX) != 0 || state(k + ShiftY) != 0 || state(k + Turn) != 0 then
+        b.placeShapes()
+        b.refreshShapeBounds()
+      // Finite values sum to a finite value or overflow to an infinity (then the guard looks
+      // closer, and finds every value finite): one test for the range.
+      sum += (b.vx + b.vy + b.w) + (b.x + b.y + b.angle)
       i += 1
+    finite(sum)
 
   // java.lang.Double.isFinite is static: `d.isNaN` goes through a boxed java.lang.Double.
   private inline def finite(d: Double): Boolean = java.lang.Double.isFinite(d)
@@ -176,3 +198,7 @@ private[sims] object SoftBodies:
   inline val TurnSin = 7
   /** Doubles per body in `state`. */
   inline val Stride = 8
+
+  /** `loadRange`'s flags: a body of the range sleeps; a body of the range has a damping. */
+  inline val Asleep = 1
+  inline val Damped = 2

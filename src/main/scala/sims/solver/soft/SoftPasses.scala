@@ -39,6 +39,16 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
 
   private val positionsTask: Workers.Task = index => integratePositions(from(index), from(index + 1))
 
+  // The bodies' list being loaded, and per range what `SoftBodies.loadRange` or `finishRange` found.
+  private var list: scala.collection.mutable.ArrayBuffer[sims.dynamics.Body] = null
+  private var rangeResults = new Array[Int](1)
+
+  private val loadTask: Workers.Task = index =>
+    rangeResults(index) = workspace.bodies.loadRange(list, h, from(index), from(index + 1))
+
+  private val finishTask: Workers.Task = index =>
+    rangeResults(index) = if workspace.bodies.finishRange(from(index), from(index + 1)) then 0 else 1
+
   // Per contact: its touching points, and its sums for the contact events (see ContactTouching).
   private var touchingPoints = new Array[Int](0)
   private var touchingSums = new Array[Double](0)
@@ -85,6 +95,32 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     inRanges(workers, contacts.count, touchingTask)
     ContactTouching.report(contacts, tracker, touchingPoints, touchingSums)
 
+  /** Takes the state of the bodies of `list` at the start of a step of substeps `h`, in ranges
+    * (see [[SoftBodies.loadRange]]).
+    */
+  def load(workers: Workers, list: scala.collection.mutable.ArrayBuffer[sims.dynamics.Body], h: Double): Unit =
+    val bodies = workspace.bodies
+    bodies.begin(list)
+    this.list = list
+    this.h = h
+    inRanges(workers, bodies.count, loadTask)
+    this.list = null
+    var flags = 0
+    var r = 0
+    while r < ranges do
+      flags |= rangeResults(r)
+      r += 1
+    bodies.loaded(flags)
+
+  /** Writes the bodies back at the end of the step, in ranges (see [[SoftBodies.finishRange]]);
+    * whether every body's velocities and placement are finite.
+    */
+  def finish(workers: Workers): Boolean =
+    inRanges(workers, workspace.bodies.count, finishTask)
+    var r = 0
+    while r < ranges && rangeResults(r) == 0 do r += 1
+    r == ranges
+
   /** Every body's placement over a substep h (see `integratePositions` below). */
   def integratePositions(workers: Workers, h: Double): Unit =
     this.h = h
@@ -101,6 +137,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   private def inRanges(workers: Workers, count: Int, task: Workers.Task): Unit =
     items = count
     ranges = if workers.count == 1 || count < SoftPasses.MinimumShared then 1 else SoftPasses.RangesPerWorker * workers.count
+    if rangeResults.length < ranges then rangeResults = new Array[Int](ranges)
     workers.run(ranges, task)
 
   // Where range `index` of the stage under way starts.
