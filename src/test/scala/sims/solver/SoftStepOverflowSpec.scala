@@ -66,3 +66,33 @@ class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
     world.step()
     java.lang.Double.isFinite(ball.pos.x) shouldBe true
   }
+
+  for workers <- Seq(1, 2) do
+    test(
+      s"SoftStep(workers = $workers): a position that overflows in the substeps fails the step at its end, naming the body, among 3,000 bodies") {
+      // Bodies that collide with nothing, so that only the end of the step can see the overflow:
+      // its finite check runs in ranges of bodies under two workers.
+      val world = World()
+      world.gravity = Vector2D.Null
+      world.solver = SoftStep(workers = workers)
+      val bodies =
+        for i <- 0 until 3000 yield
+          val ball = Circle(0.1, 1)
+          ball.collidable = false
+          ball.pos = Vector2D(i * 0.3, 0)
+          val body = ball.asBody
+          world += body
+          body
+      world.step()
+      bodies(2500).pos = Vector2D(1.79e308, 0)
+      bodies(2500).linearVelocity = Vector2D(1e308, 0) // finite, but 1/60 s of it overflows the position
+      val before = StateHash(world)
+      val error = intercept[ArithmeticException](world.step())
+      error.getMessage should include("body 2500")
+      error.getMessage should include("soft step substeps")
+      error.getMessage should include("restored")
+      StateHash(world) shouldBe before
+      bodies(2500).linearVelocity = Vector2D(-1, 0)
+      world.step() // and the world goes on
+      java.lang.Double.isFinite(bodies(2500).pos.x) shouldBe true
+    }
