@@ -31,10 +31,24 @@ private[sims] final class CollisionPipeline:
     */
   def findPairs(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
       sweep: Double, inGridOrder: Boolean): Unit =
+    takeBounds(shapes, gridSide, maxPairs, limitName, margin, sweep)
+    broadphase.findPairs(pairs, inGridOrder)
+
+  /** `findPairs` in the grid's own order, shared among threads: takes the shapes' bounds as it
+    * does and starts the broadphase's shared search (see [[UniformGrid.beginShared]]); the caller
+    * then runs `broadphase.findPairsOf` for ranges of its `shapeCount` shapes, each into a buffer
+    * of its own with this `maxPairs`, and ends with `broadphase.endShared(pairs, ...)`.
+    */
+  def beginSharedPairs(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
+      sweep: Double): Unit =
+    takeBounds(shapes, gridSide, maxPairs, limitName, margin, sweep)
+    broadphase.beginShared(pairs)
+
+  private def takeBounds(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
+      sweep: Double): Unit =
     holdsQueryBounds = false
     broadphase.gridSide = gridSide
     pairs.limit = maxPairs
     pairs.limitName = limitName
     pairs.clear()
     broadphase.update(shapes, margin, sweep, everyShape = false)
-    broadphase.findPairs(pairs, inGridOrder)

@@ -55,10 +55,7 @@ private[sims] final class PairBuffer:
     * there would be more than `limit` pairs.
     */
   def add(a: Int, b: Int): Unit =
-    if count == limit then
-      throw IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
-        s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
-        "has that many overlapping bounds")
+    if count == limit then throw tooMany()
     if count == firsts.length then
       firsts = java.util.Arrays.copyOf(firsts, count * 2)
       seconds = java.util.Arrays.copyOf(seconds, count * 2)
@@ -66,6 +63,24 @@ private[sims] final class PairBuffer:
     seconds(count) = b
     count += 1
     filled = false
+
+  /** Appends the pairs of `other`, whose indices are into the same shapes; fails once there
+    * would be more than `limit` pairs.
+    */
+  def append(other: PairBuffer): Unit =
+    if other.count > limit - count then throw tooMany()
+    if count + other.count > firsts.length then
+      firsts = java.util.Arrays.copyOf(firsts, 2 * (count + other.count))
+      seconds = java.util.Arrays.copyOf(seconds, 2 * (count + other.count))
+    System.arraycopy(other.firsts, 0, firsts, count, other.count)
+    System.arraycopy(other.seconds, 0, seconds, count, other.count)
+    count += other.count
+    filled = false
+
+  private def tooMany(): IllegalStateException =
+    IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
+      s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
+      "has that many overlapping bounds")
 
   /** Gives every pair its slot, made if there is none yet, with the pair's shapes in it. */
   def fillSlots(): Unit =

@@ -47,6 +47,48 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     }
   }
 
+  /** The pairs of the grid's own order (the soft step's), found by one search or shared out in
+    * `ranges` ranges of shapes, with the pair tests each made.
+    */
+  private def ownOrderPairs(world: World, side: Double, ranges: Int, maxPairs: Int = 1000000): (Seq[(Int, Int)], Long) =
+    val pipeline = world.collisionPipeline
+    val grid = pipeline.broadphase
+    val testsBefore = grid.pairTests
+    if ranges == 0 then pipeline.findPairs(world.shapeBuffer, side, maxPairs, "maxPairs", 0, 0, inGridOrder = false)
+    else
+      pipeline.beginSharedPairs(world.shapeBuffer, side, maxPairs, "maxPairs", 0, 0)
+      val buffers = Array.fill(ranges)(PairBuffer())
+      buffers.foreach(_.limit = maxPairs)
+      val n = grid.shapeCount
+      val tests = (0 until ranges).map(r => grid.findPairsOf(n * r / ranges, n * (r + 1) / ranges, buffers(r))).sum
+      grid.endShared(pipeline.pairs, buffers, ranges, tests)
+    val pairs = pipeline.pairs
+    ((0 until pairs.size).map(i => (pairs.first(i).worldIndex, pairs.second(i).worldIndex)), grid.pairTests - testsBefore)
+
+  test("the search shared out in ranges of shapes finds the pairs of one search, in its order, with as many tests") {
+    forAll(Gen.listOfN(80, shape), Gen.oneOf(0.5, 2.0, 7.0), Gen.oneOf(1, 2, 3, 7, 40), minSuccessful(40)) {
+      (shapes, side, ranges) =>
+        val world = scene(shapes, side)
+        val (alone, aloneTests) = ownOrderPairs(world, side, 0)
+        val (shared, sharedTests) = ownOrderPairs(world, side, ranges)
+        shared shouldBe alone
+        sharedTests shouldBe aloneTests
+        alone.sorted shouldBe bruteForce(world).map(p => (p._1.worldIndex, p._2.worldIndex)).sorted
+    }
+  }
+
+  test("the search shared out fails past maxPairs as one search does, naming the limit") {
+    val world = World()
+    for i <- 0 until 40 do
+      val ball = Circle(0.5, 1)
+      ball.pos = Vector2D(0.01 * i, 0)
+      world += ball.asBody
+    for ranges <- Seq(0, 3) do
+      val error = intercept[IllegalStateException](ownOrderPairs(world, 2.0, ranges, maxPairs = 100))
+      error.getMessage should include("more than 100 candidate pairs")
+      error.getMessage should include("maxPairs")
+  }
+
   test("pair filters: same body, not collidable, transient, both fixed") {
     val world = World()
     val a = Circle(1, 1)

@@ -199,7 +199,10 @@ private[sims] final class UniformGrid extends Broadphase:
           g += 1
       i += 1
     gridBuilt = true
-    // Large shapes meet every collidable shape directly.
+    largePairs(pairs)
+
+  // Large shapes meet every collidable shape directly.
+  private def largePairs(pairs: PairBuffer): Unit =
     var k = 0
     while k < large.length do
       val big = large(k)
@@ -210,6 +213,77 @@ private[sims] final class UniformGrid extends Broadphase:
           if j < big then pairs.add(j, big) else pairs.add(big, j)
         j += 1
       k += 1
+
+  /** Number of shapes of the last `update`. */
+  def shapeCount: Int = count
+
+  /** Starts `findPairs(pairs, inGridOrder = false)` shared among threads: every shape goes into
+    * the fine grid at once, after which `findPairsOf` may run for ranges of shapes on several
+    * threads, each into a buffer of its own, and `endShared` puts the buffers into `pairs`: the
+    * same pairs in the same order.
+    */
+  def beginShared(pairs: PairBuffer): Unit =
+    sorted = false
+    pairs.clear(shapes)
+    buildGrid()
+
+  /** The pairs of shapes `from` until `until` (a shape's partners among the earlier shapes, as
+    * `findPairs` finds them) into `out`, which is cleared first. Reads the grid only: ranges
+    * may run at once. Returns the pair tests made (see `pairTests`).
+    */
+  def findPairsOf(from: Int, until: Int, out: PairBuffer): Long =
+    out.clear(shapes)
+    var tests = 0L
+    var i = from
+    while i < until do
+      val p = placement(i)
+      if p == Wide then
+        var j = 0
+        while j < i do
+          val q = placement(j)
+          if q == Fine || q == Wide then
+            tests += 1
+            if overlapAccepted(j, i) then out.add(j, i)
+          j += 1
+      else if p == Fine then
+        val x0 = fineX0(i); val y0 = fineY0(i)
+        var cxLong = x0.toLong
+        while cxLong <= fineX1(i) do
+          val cx = cxLong.toInt
+          var cyLong = y0.toLong
+          while cyLong <= fineY1(i) do
+            val cy = cyLong.toInt
+            // The cell holds every shape, the latest first: the earlier ones follow shape i.
+            var entry = grid.firstEntry(cx, cy)
+            while grid.shapeOf(entry) != i do entry = grid.nextEntry(entry)
+            entry = grid.nextEntry(entry)
+            while entry >= 0 do
+              val j = grid.shapeOf(entry)
+              if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy then
+                tests += 1
+                if overlapAccepted(j, i) then out.add(j, i)
+              entry = grid.nextEntry(entry)
+            cyLong += 1
+          cxLong += 1
+        var k = 0
+        while k < wide.length && wide(k) < i do
+          val j = wide(k)
+          tests += 1
+          if overlapAccepted(j, i) then out.add(j, i)
+          k += 1
+      i += 1
+    tests
+
+  /** Ends a shared `findPairs`: appends the first `count` of `ranges` (in order) to `pairs`, then
+    * the large shapes' pairs; counts the ranges' pair `tests`.
+    */
+  def endShared(pairs: PairBuffer, ranges: Array[PairBuffer], count: Int, tests: Long): Unit =
+    var r = 0
+    while r < count do
+      pairs.append(ranges(r))
+      r += 1
+    pairTests += tests
+    largePairs(pairs)
 
   def query(minX: Double, minY: Double, maxX: Double, maxY: Double, found: ArrayBuffer[Shape]): Unit =
     if !gridBuilt then buildGrid()
@@ -326,6 +400,7 @@ private[sims] final class UniformGrid extends Broadphase:
     */
   private def buildGrid(): Unit =
     resetGrid()
+    // Shape by shape and cell by cell, as `findPairs` pushes them (`findPairsOf` relies on it).
     var i = 0
     while i < count do
       if placement(i) == Fine then
@@ -359,6 +434,9 @@ private[sims] final class UniformGrid extends Broadphase:
   /** Shapes j and i may collide: their bounds of this step overlap and the filter accepts them. */
   private def candidates(j: Int, i: Int): Boolean =
     pairTests += 1
+    overlapAccepted(j, i)
+
+  private def overlapAccepted(j: Int, i: Int): Boolean =
     sims.geometry.AABB.overlaps(boxMinX(j), boxMinY(j), boxMaxX(j), boxMaxY(j),
       boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && accepts(j, i)
 

@@ -68,6 +68,14 @@ private[sims] final class ContactFinder:
 
   private val placeTask: Workers.Task = index => current.place(stages(index), base(index), hotBase(index))
 
+  // A shared broadphase: its grid, and per range of shapes its pairs and how many it tested.
+  private var grid: sims.collision.broadphase.UniformGrid = null
+  private var pairRanges = new Array[PairBuffer](0)
+  private var pairTests = new Array[Long](0)
+
+  private val pairsTask: Workers.Task = index =>
+    pairTests(index) = grid.findPairsOf(from(index), from(index + 1), pairRanges(index))
+
   /** Fills `table.current` with this step's contacts of `world`, whose bodies `bodies` holds,
     * with the world's broadphase in cells of `gridSide` and at most `maxPairs` candidate pairs,
     * the pairs shared out among `workers` when there are many.
@@ -82,8 +90,11 @@ private[sims] final class ContactFinder:
     world.detector match
       case detector: GridDetector =>
         val stages = world.collisionPipeline
-        stages.findPairs(world.shapeBuffer, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance, world.timeStep,
-          inGridOrder = false)
+        if workers.count > 1 && world.shapeBuffer.length >= SoftPasses.MinimumShared then
+          findPairsShared(workers, world, gridSide, maxPairs, speculativeDistance)
+        else
+          stages.findPairs(world.shapeBuffer, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance,
+            world.timeStep, inGridOrder = false)
         val pairs = stages.pairs
         val narrowphase = stages.narrowphase
         narrowphase.update(detector.detectionMethods, detector.collisionMethods)
@@ -157,6 +168,36 @@ private[sims] final class ContactFinder:
           collider.addCollision(c, key, collider.lastOf(key))
           i += 1
     if !bodies.anyAsleep || !world.detector.isInstanceOf[GridDetector] then table.current.active = table.current.count
+
+  /** The broadphase's pairs in ranges of shapes shared out among `workers` (see
+    * [[sims.collision.broadphase.UniformGrid.beginShared]]): the same pairs, in the same order,
+    * as on one thread.
+    */
+  private def findPairsShared(workers: Workers, world: World, gridSide: Double, maxPairs: Int,
+      speculativeDistance: Double): Unit =
+    val stages = world.collisionPipeline
+    stages.beginSharedPairs(world.shapeBuffer, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance,
+      world.timeStep)
+    val count = ContactFinder.RangesPerWorker * workers.count
+    if pairRanges.length < count then
+      pairRanges = Array.fill(count)(PairBuffer())
+      pairTests = new Array[Long](count)
+    var r = 0
+    while r < count do
+      pairRanges(r).limit = maxPairs
+      pairRanges(r).limitName = "SoftStep.maxPairs"
+      r += 1
+    grid = stages.broadphase
+    ranges = count
+    items = grid.shapeCount
+    try workers.run(count, pairsTask)
+    finally grid = null
+    var tests = 0L
+    r = 0
+    while r < count do
+      tests += pairTests(r)
+      r += 1
+    stages.broadphase.endShared(stages.pairs, pairRanges, count, tests)
 
   /** Collides `pairs` in ranges shared out among `workers`, into `table.current` in the ranges'
     * order; false, with nothing added, when a range met a pair of a user's kinds. A failure (a
