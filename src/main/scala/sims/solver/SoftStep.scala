@@ -321,9 +321,7 @@ final case class SoftStep(
       // The guard names the first body that is not finite, and fails the step.
       world.guard("soft step substeps", Checked.Velocities)
       world.guard("soft step substeps", Checked.Positions)
-    if world.enableContactEvents then
-      workspace.passes.reportTouching(pool, world.contactTracker)
-    workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
+    workspace.passes.close(pool, world)
     workspace.table.commit()
     workspace.collidedRevision = if world.enableCollisionDetection then world.revision else -1
 

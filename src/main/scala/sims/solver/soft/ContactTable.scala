@@ -18,72 +18,50 @@ private[sims] final class ContactTable:
   var current: Contacts = Contacts()
   /** The committed generation (the last step's contacts). */
   var committed: Contacts = Contacts()
-  // The committed contacts by pair key (`PairKey`): the pair's slot holds its contact's index as
-  // its stamp.
-  private val index = new PairTable(keepsShapes = false)
-  // Whether a lookup may guess (see `ContactTable.Lookup`): not when a pair is listed twice,
-  // since the index holds its last contact, which a guess might miss.
-  private var guessing = true
-  // A bit per hash of the committed contacts' keys (a Bloom filter, one hash): a pair whose bit
-  // is clear had no contact, which most candidate pairs without one learn here, in a table small
-  // enough to stay in the cache, instead of by a probe of the index. At least 8 bits per contact.
-  private var filter = new Array[Long](1)
-  private var filterShift = 58 // 64 - log2(the filter's bits)
+  // The committed contacts by pair key; and the index of the current ones, when `indexCurrent`
+  // made it ahead of `commit` (false again at `begin`: a step that fails before its commit
+  // keeps the committed contacts and their index).
+  private var byKey = ContactTable.Index()
+  private var nextByKey = ContactTable.Index()
+  private var nextIndexed = false
   private val lookup = ContactTable.Lookup(this)
 
   /** Starts building this step's contacts. */
   def begin(): Unit =
     current.clear()
+    nextIndexed = false
     lookup.restart()
 
   /** The committed contact of the shape pair `key`, or -1 (the table's own [[ContactTable.Lookup]]). */
   def lastOf(key: Long): Int = lookup.lastOf(key)
 
   // The committed contact of the shape pair `key`, or -1, trying committed contact `guess` first.
-  private def find(key: Long, guess: Int): Int =
-    if guessing && guess < committed.count && committed.keys(guess) == key then guess
-    else if !mayHave(key) then -1 // before the search near the guess, which a pair with no contact would run to its end
-    else
-      val near = if guessing then PairKey.near(committed.keys, committed.count, guess, key) else -1
-      if near >= 0 then near
-      else
-        val slot = index.find(key)
-        if slot < 0 then -1 else index.stampAt(slot).toInt
+  private def find(key: Long, guess: Int): Int = byKey.find(committed, key, guess)
 
-  private def mayHave(key: Long): Boolean =
-    val bit = filterBit(key)
-    (filter(bit >>> 6) & (1L << (bit & 63))) != 0
-
-  private inline def filterBit(key: Long): Int = ((key * 0x9e3779b97f4a7c15L) >>> filterShift).toInt
+  /** Indexes this step's contacts for the next step's lookups now, rather than in `commit`: it
+    * reads them only, so that it may run beside other readers of the step's contacts.
+    */
+  def indexCurrent(): Unit =
+    nextByKey.build(current)
+    nextIndexed = true
 
   /** Makes this step's contacts the last step's. */
   def commit(): Unit =
     val built = current
     current = committed
     committed = built
-    indexCommitted()
+    if nextIndexed then
+      val index = byKey
+      byKey = nextByKey
+      nextByKey = index
+      nextIndexed = false
+    else byKey.build(committed)
+    lookup.restart()
 
   /** Makes the last step's contacts the committed ones again (a step failed after `commit`). */
-  def uncommit(): Unit = commit()
-
-  private def indexCommitted(): Unit =
-    index.clear()
-    // 8 to 64 bits per contact: a count that goes up and down does not reallocate every step.
-    val needed = 8L * committed.count
-    val bits = 64L * filter.length
-    if bits < needed || bits > 8 * needed && bits > 64 then
-      filter = new Array[Long](math.max(1, Integer.highestOneBit(committed.count) / 4))
-    else java.util.Arrays.fill(filter, 0L)
-    filterShift = 64 - Integer.numberOfTrailingZeros(64 * filter.length)
-    var c = 0
-    while c < committed.count do
-      // A pair listed twice (a user's detector may) finds its last contact, as it always has.
-      index.put(committed.keys(c), c)
-      val bit = filterBit(committed.keys(c))
-      filter(bit >>> 6) |= 1L << (bit & 63)
-      c += 1
-    guessing = index.size == committed.count
-    lookup.restart()
+  def uncommit(): Unit =
+    nextIndexed = false
+    commit()
 
   /** A copy of the committed generation (for a snapshot of the world). */
   def copyCommitted(): Contacts = committed.copy()
@@ -91,9 +69,63 @@ private[sims] final class ContactTable:
   /** Puts back a copy taken by `copyCommitted` as the committed generation (null: none). */
   def restoreCommitted(saved: Contacts): Unit =
     committed = if saved == null then Contacts() else saved.copy()
-    indexCommitted()
+    nextIndexed = false
+    byKey.build(committed)
+    lookup.restart()
 
 private[sims] object ContactTable:
+  /** One generation's contacts by pair key: a table keyed by the pair (`PairKey`) whose slot
+    * holds the contact's index as its stamp, and a bit per hash of the keys (a Bloom filter, one
+    * hash): a pair whose bit is clear had no contact, which most candidate pairs without one
+    * learn there, in a table small enough to stay in the cache, instead of by a probe of the
+    * table. At least 8 bits per contact.
+    */
+  final class Index:
+    private val table = new PairTable(keepsShapes = false)
+    // Whether a lookup may guess: not when a pair is listed twice, since the table holds its
+    // last contact, which a guess might miss.
+    private var guessing = true
+    private var filter = new Array[Long](1)
+    private var filterShift = 58 // 64 - log2(the filter's bits)
+
+    /** Indexes the contacts of `contacts`. */
+    def build(contacts: Contacts): Unit =
+      table.clear()
+      // 8 to 64 bits per contact: a count that goes up and down does not reallocate every step.
+      val needed = 8L * contacts.count
+      val bits = 64L * filter.length
+      if bits < needed || bits > 8 * needed && bits > 64 then
+        filter = new Array[Long](math.max(1, Integer.highestOneBit(contacts.count) / 4))
+      else java.util.Arrays.fill(filter, 0L)
+      filterShift = 64 - Integer.numberOfTrailingZeros(64 * filter.length)
+      var c = 0
+      while c < contacts.count do
+        // A pair listed twice (a user's detector may) finds its last contact, as it always has.
+        table.put(contacts.keys(c), c)
+        val bit = filterBit(contacts.keys(c))
+        filter(bit >>> 6) |= 1L << (bit & 63)
+        c += 1
+      guessing = table.size == contacts.count
+
+    /** The contact of the pair `key` among `contacts` (the ones indexed), or -1, trying contact
+      * `guess` first, then (unless the filter rules the pair out) those near it, then the table.
+      */
+    def find(contacts: Contacts, key: Long, guess: Int): Int =
+      if guessing && guess < contacts.count && contacts.keys(guess) == key then guess
+      else if !mayHave(key) then -1 // before the search near the guess, which a pair with no contact would run to its end
+      else
+        val near = if guessing then PairKey.near(contacts.keys, contacts.count, guess, key) else -1
+        if near >= 0 then near
+        else
+          val slot = table.find(key)
+          if slot < 0 then -1 else table.stampAt(slot).toInt
+
+    private def mayHave(key: Long): Boolean =
+      val bit = filterBit(key)
+      (filter(bit >>> 6) & (1L << (bit & 63))) != 0
+
+    private inline def filterBit(key: Long): Int = ((key * 0x9e3779b97f4a7c15L) >>> filterShift).toInt
+
   /** Finds the committed contacts of pairs for one reader: it first tries the committed contact
     * after the one it found last (the pairs come in much the same order every step, so that is
     * usually the one: a comparison of keys instead of a probe of the index), then the table's

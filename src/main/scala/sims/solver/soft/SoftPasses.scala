@@ -46,6 +46,16 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   private val loadTask: Workers.Task = index =>
     rangeResults(index) = workspace.bodies.loadRange(list, h, from(index), from(index + 1))
 
+  // The world whose step is closing (see `close`).
+  private var closing: sims.dynamics.World = null
+
+  private val closeTask: Workers.Task = index =>
+    if index == 0 then workspace.table.indexCurrent()
+    else
+      val world = closing
+      if world.enableContactEvents then reportTouching(Workers.Serial, world.contactTracker)
+      workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
+
   private val finishTask: Workers.Task = index =>
     rangeResults(index) = if workspace.bodies.finishRange(from(index), from(index + 1)) then 0 else 1
 
@@ -120,6 +130,16 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     var r = 0
     while r < ranges && rangeResults(r) == 0 do r += 1
     r == ranges
+
+  /** The step's last work on its contacts, two tasks at once (they read the contacts only and
+    * write apart): the index of this step's contacts for the next step's lookups
+    * ([[ContactTable.indexCurrent]]); the touching contacts reported to `world`'s contact events
+    * (when on) and the sleep islands brought up to date.
+    */
+  def close(workers: Workers, world: sims.dynamics.World): Unit =
+    closing = world
+    try workers.run(2, closeTask)
+    finally closing = null
 
   /** Every body's placement over a substep h (see `integratePositions` below). */
   def integratePositions(workers: Workers, h: Double): Unit =

@@ -60,3 +60,42 @@ class ContactTableSpec extends AnyFunSuite:
     assert(table.lastOf(7L) == 0)
     assert(table.lastOf(3L) == 1)
   }
+
+  /** `committedWith`'s table with a step of contacts `next` built on it, not committed yet. */
+  private def building(committed: Seq[Long], next: Seq[Long]): ContactTable =
+    val table = committedWith(committed*)
+    for key <- next do
+      val c = table.current.add(1)
+      table.current.keys(c) = key
+    table
+
+  test("the step's contacts indexed ahead of the commit are found as when the commit indexes them") {
+    val ahead = building(Seq(7L, 3L, 12L), Seq(40L, 3L, 5L, 40L))
+    ahead.indexCurrent()
+    assert(Seq(7L, 3L, 12L).map(ahead.lastOf) == Seq(0, 1, 2)) // the committed ones until the commit
+    ahead.commit()
+    ahead.begin()
+    val atCommit = building(Seq(7L, 3L, 12L), Seq(40L, 3L, 5L, 40L))
+    atCommit.commit()
+    atCommit.begin()
+    val asked = Seq(3L, 40L, 5L, 7L, 12L, 99L)
+    assert(asked.map(ahead.lastOf) == Seq(1, 3, 2, -1, -1, -1))
+    assert(asked.map(atCommit.lastOf) == asked.map(ahead.lastOf))
+  }
+
+  test("a step that fails after indexing its contacts ahead (no commit) leaves the committed ones found") {
+    def failedThenNext(): ContactTable =
+      val table = building(Seq(7L, 3L, 12L), Seq(40L, 5L))
+      table.indexCurrent()
+      table.begin() // the next step, the failed one's contacts dropped
+      table.current.keys(table.current.add(1)) = 12L
+      table.commit()
+      table
+    val next = failedThenNext()
+    next.begin()
+    assert(Seq(12L, 7L, 40L).map(next.lastOf) == Seq(0, -1, -1))
+    val undone = failedThenNext()
+    undone.uncommit() // that step failed too, after its commit
+    undone.begin()
+    assert(Seq(7L, 3L, 12L, 40L, 5L).map(undone.lastOf) == Seq(0, 1, 2, -1, -1))
+  }
