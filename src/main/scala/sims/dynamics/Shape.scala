@@ -193,7 +193,10 @@ abstract class Shape:
     angle = newAngle
     moved()
 
-  /** Called after every change of placement; shapes with cached geometry invalidate it. */
+  /** Called after every change of placement; shapes with cached geometry invalidate it. A soft
+    * step with several workers places many bodies' shapes at once, on its threads: an override
+    * should touch only its own shape's state.
+    */
   protected def moved(): Unit = ()
 
   /** Computes the geometry the shape caches for the collision stage now, if it moved since: the
