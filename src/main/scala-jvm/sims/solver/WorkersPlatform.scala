@@ -18,7 +18,10 @@ private[solver] object WorkersPlatform:
 
 /** The caller and `count - 1` daemon threads. The tasks of a `run` are claimed one by one by the
   * caller and the threads, so a thread the machine has not scheduled yet costs nothing: the
-  * caller claims the tasks itself and waits only for those under way on other threads. Between
+  * caller claims the tasks itself and waits only for those under way on other threads. The
+  * caller claims from the first task on, the threads from the last one back: runs over the same
+  * blocks (a step's passes) then give each thread much the same tasks every time, whose data its
+  * core's cache still holds. Between
   * runs the threads spin briefly, then park (a step's runs follow one another within
   * microseconds; between steps the threads park). Nothing is allocated per `run`. One world's
   * step at a time: a `run` that finds the pool busy (worlds stepped on several threads at once)
@@ -31,8 +34,9 @@ private[solver] final class ThreadPool(val count: Int) extends Workers:
   // The work of the current run: written before `claims` announces the run, read after.
   @volatile private var task: Workers.Task = null
   @volatile private var failure: Throwable = null
-  // The run's number, its task count and the next task to claim, in one value: a claim succeeds
-  // only within the run it read (a thread late for one run cannot take the next one's tasks).
+  // The run's number, the end of the tasks left (one past the last) and the first task left, in
+  // one value: a claim succeeds only within the run it read (a thread late for one run cannot
+  // take the next one's tasks).
   private val claims = AtomicLong(0)
   private val done = AtomicInteger(0)
   private val parked = AtomicIntegerArray(count)
@@ -58,7 +62,7 @@ private[solver] final class ThreadPool(val count: Int) extends Workers:
         while w < count do
           if parked.get(w) != 0 then LockSupport.unpark(threads(w))
           w += 1
-        claimAll()
+        claimAll(fromEnd = false)
         var spins = 0
         while done.get != tasks do
           if spins < Spins then
@@ -72,19 +76,21 @@ private[solver] final class ThreadPool(val count: Int) extends Workers:
           throw failed
       finally busy.set(false)
 
-  // Claims and runs tasks of the run announced in `claims` until none is left.
-  private def claimAll(): Unit =
+  // Claims and runs tasks of the run announced in `claims` until none is left: the first task
+  // left each time, or (`fromEnd`) the last.
+  private def claimAll(fromEnd: Boolean): Unit =
     var claiming = true
     while claiming do
       val seen = claims.get
-      val tasks = ((seen >>> TaskShift) & TaskMask).toInt
-      val next = (seen & TaskMask).toInt
-      if next >= tasks then claiming = false
+      val end = ((seen >>> TaskShift) & TaskMask).toInt
+      val first = (seen & TaskMask).toInt
+      if first >= end then claiming = false
       else
         // Read before the claim: while tasks are left, the run (and so its task) is this one.
         val t = task
-        if claims.compareAndSet(seen, seen + 1) then
-          try t.run(next)
+        val index = if fromEnd then end - 1 else first
+        if claims.compareAndSet(seen, if fromEnd then seen - (1L << TaskShift) else seen + 1) then
+          try t.run(index)
           catch case e: Throwable => failure = e
           finally done.incrementAndGet()
 
@@ -101,7 +107,7 @@ private[solver] final class ThreadPool(val count: Int) extends Workers:
           if (claims.get >>> RunShift) == seenRun then LockSupport.park(this)
           parked.set(w, 0)
       seenRun = claims.get >>> RunShift
-      claimAll()
+      claimAll(fromEnd = true)
 
   override def toString: String = s"ThreadPool(count = $count)"
 
