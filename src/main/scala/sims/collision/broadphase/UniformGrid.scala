@@ -169,25 +169,18 @@ private[sims] final class UniformGrid extends Broadphase:
             if (q == Fine || q == Wide) && candidates(j, i) then addToGroup(j, i)
             j += 1
         else
-          // Long counters: a cell index at Int.MaxValue must not wrap around.
           val x0 = fineX0(i); val y0 = fineY0(i)
-          var cxLong = x0.toLong
-          while cxLong <= fineX1(i) do
-            val cx = cxLong.toInt
-            var cyLong = y0.toLong
-            while cyLong <= fineY1(i) do
-              val cy = cyLong.toInt
-              val slot = grid.open(cx, cy)
-              var entry = grid.head(slot)
-              while entry >= 0 do
-                val j = grid.shapeOf(entry)
-                // Each pair once: in the fine cell holding the corner of the bounds' overlap.
-                if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy && candidates(j, i) then
-                  addToGroup(j, i)
-                entry = grid.nextEntry(entry)
-              grid.push(slot, i)
-              cyLong += 1
-            cxLong += 1
+          forEachFineCell(i) { (cx, cy) =>
+            val slot = grid.open(cx, cy)
+            var entry = grid.head(slot)
+            while entry >= 0 do
+              val j = grid.shapeOf(entry)
+              // Each pair once: in the fine cell holding the corner of the bounds' overlap.
+              if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy && candidates(j, i) then
+                addToGroup(j, i)
+              entry = grid.nextEntry(entry)
+            grid.push(slot, i)
+          }
           var k = 0
           while k < wide.length && wide(k) < i do
             val j = wide(k)
@@ -247,24 +240,18 @@ private[sims] final class UniformGrid extends Broadphase:
           j += 1
       else if p == Fine then
         val x0 = fineX0(i); val y0 = fineY0(i)
-        var cxLong = x0.toLong
-        while cxLong <= fineX1(i) do
-          val cx = cxLong.toInt
-          var cyLong = y0.toLong
-          while cyLong <= fineY1(i) do
-            val cy = cyLong.toInt
-            // The cell holds every shape, the latest first: the earlier ones follow shape i.
-            var entry = grid.firstEntry(cx, cy)
-            while grid.shapeOf(entry) != i do entry = grid.nextEntry(entry)
+        forEachFineCell(i) { (cx, cy) =>
+          // The cell holds every shape, the latest first: the earlier ones follow shape i.
+          var entry = grid.firstEntry(cx, cy)
+          while grid.shapeOf(entry) != i do entry = grid.nextEntry(entry)
+          entry = grid.nextEntry(entry)
+          while entry >= 0 do
+            val j = grid.shapeOf(entry)
+            if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy then
+              tests += 1
+              if overlapAccepted(j, i) then out.add(j, i)
             entry = grid.nextEntry(entry)
-            while entry >= 0 do
-              val j = grid.shapeOf(entry)
-              if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy then
-                tests += 1
-                if overlapAccepted(j, i) then out.add(j, i)
-              entry = grid.nextEntry(entry)
-            cyLong += 1
-          cxLong += 1
+        }
         var k = 0
         while k < wide.length && wide(k) < i do
           val j = wide(k)
@@ -404,13 +391,7 @@ private[sims] final class UniformGrid extends Broadphase:
     var i = 0
     while i < count do
       if placement(i) == Fine then
-        var cxLong = fineX0(i).toLong
-        while cxLong <= fineX1(i) do
-          var cyLong = fineY0(i).toLong
-          while cyLong <= fineY1(i) do
-            grid.insert(cxLong.toInt, cyLong.toInt, i)
-            cyLong += 1
-          cxLong += 1
+        forEachFineCell(i)((cx, cy) => grid.insert(cx, cy, i))
       i += 1
     gridBuilt = true
 
@@ -430,6 +411,18 @@ private[sims] final class UniformGrid extends Broadphase:
     * that the grid stays linear).
     */
   private[sims] var pairTests: Long = 0
+
+  /** Calls `visit` for each fine cell of shape i, x, then y (inlined: no closure). Long counters:
+    * a cell index at Int.MaxValue must not wrap around.
+    */
+  private inline def forEachFineCell(i: Int)(inline visit: (Int, Int) => Unit): Unit =
+    var cxLong = fineX0(i).toLong
+    while cxLong <= fineX1(i) do
+      var cyLong = fineY0(i).toLong
+      while cyLong <= fineY1(i) do
+        visit(cxLong.toInt, cyLong.toInt)
+        cyLong += 1
+      cxLong += 1
 
   /** Shapes j and i may collide: their bounds of this step overlap and the filter accepts them. */
   private def candidates(j: Int, i: Int): Boolean =
