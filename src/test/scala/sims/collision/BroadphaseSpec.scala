@@ -48,7 +48,7 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
   }
 
   /** The pairs of the grid's own order (the soft step's), found by one search or shared out in
-    * `ranges` ranges of shapes, with the pair tests each made.
+    * `ranges` ranges of shapes (their bounds too), with the pair tests each made.
     */
   private def ownOrderPairs(world: World, side: Double, ranges: Int, maxPairs: Int = 1000000): (Seq[(Int, Int)], Long) =
     val pipeline = world.collisionPipeline
@@ -56,10 +56,13 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     val testsBefore = grid.pairTests
     if ranges == 0 then pipeline.findPairs(world.shapeBuffer, side, maxPairs, "maxPairs", 0, 0, inGridOrder = false)
     else
-      pipeline.beginSharedPairs(world.shapeBuffer, side, maxPairs, "maxPairs", 0, 0)
+      pipeline.beginSharedBounds(world.shapeBuffer, side, maxPairs, "maxPairs", 0, 0)
+      val n = world.shapeBuffer.length
+      // The bounds' ranges last to first: each writes its own shapes' slots only.
+      for r <- (0 until ranges).reverse do grid.boundsOf(n * r / ranges, n * (r + 1) / ranges)
+      pipeline.beginSharedPairs()
       val buffers = Array.fill(ranges)(PairBuffer())
       buffers.foreach(_.limit = maxPairs)
-      val n = grid.shapeCount
       val tests = (0 until ranges).map(r => grid.findPairsOf(n * r / ranges, n * (r + 1) / ranges, buffers(r))).sum
       grid.endShared(pipeline.pairs, buffers, ranges, tests)
     val pairs = pipeline.pairs

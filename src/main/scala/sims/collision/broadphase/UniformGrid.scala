@@ -70,6 +70,9 @@ private[sims] final class UniformGrid extends Broadphase:
   private val foundIndices = ArrayBuffer.empty[Int]
   // The box around the bounds of the shapes in the fine grid: a ray's walk is clipped to it.
   private var fineMinX, fineMinY, fineMaxX, fineMaxY = 0.0
+  // The settings of the update under way (see `beginUpdate`).
+  private var updateMargin, updateSweep = 0.0
+  private var updateEveryShape = false
 
   def update(shapes: Array[Shape], margin: Double): Unit = update(shapes, margin, 0, everyShape = false)
 
@@ -80,21 +83,32 @@ private[sims] final class UniformGrid extends Broadphase:
     * they are left out (they collide with nothing).
     */
   def update(shapes: Array[Shape], margin: Double, sweep: Double, everyShape: Boolean): Unit =
+    beginUpdate(shapes, margin, sweep, everyShape)
+    boundsOf(0, count)
+    endUpdate()
+
+  /** Starts `update` shared among threads: `boundsOf` may then run for ranges of the shapes on
+    * several threads at once, after which `endUpdate` ends it (the same grid as `update`).
+    */
+  def beginUpdate(shapes: Array[Shape], margin: Double, sweep: Double, everyShape: Boolean): Unit =
     this.shapes = shapes
     count = shapes.length
     ensureCapacity(count)
+    updateMargin = margin
+    updateSweep = sweep
+    updateEveryShape = everyShape
+
+  /** The enlarged bounds, coarse cells and placement (ignored, large or fine) of shapes `from`
+    * until `until` of this update. Writes their slots only: ranges may run at once.
+    */
+  def boundsOf(from: Int, until: Int): Unit =
     val side = _gridSide
-    large.clear()
-    wide.clear()
-    // Bounds, the large shapes, and the mean extent of the others for the fine grid's cells.
-    var extentSum = 0.0
-    var counted = 0
-    originX = Double.PositiveInfinity
-    originY = Double.PositiveInfinity
-    var i = 0
-    while i < count do
+    val margin = updateMargin
+    val sweep = updateSweep
+    var i = from
+    while i < until do
       val s = shapes(i)
-      if (!s.collidable || s.sensor) && !everyShape then placement(i) = Ignored
+      if (!s.collidable || s.sensor) && !updateEveryShape then placement(i) = Ignored
       else
         if owner(i) ne s.body then owner(i) = s.body // no write barrier for last step's body
         filterKind(i) = kindOf(s)
@@ -108,15 +122,34 @@ private[sims] final class UniformGrid extends Broadphase:
         boxMinX(i) = x0; boxMinY(i) = y0; boxMaxX(i) = x1; boxMaxY(i) = y1
         coarseX0(i) = cell(x0, side)
         coarseY0(i) = cell(y0, side)
-        if (cell(x1, side).toDouble - coarseX0(i) + 1) * (cell(y1, side).toDouble - coarseY0(i) + 1) > Defaults.LargeShapeCells then
-          placement(i) = Large
-          large += i
-        else
-          placement(i) = Fine
-          extentSum += math.max(x1 - x0, y1 - y0)
-          counted += 1
-          if x0 < originX then originX = x0
-          if y0 < originY then originY = y0
+        placement(i) =
+          if (cell(x1, side).toDouble - coarseX0(i) + 1) * (cell(y1, side).toDouble - coarseY0(i) + 1) > Defaults.LargeShapeCells
+          then Large
+          else Fine
+      i += 1
+
+  /** Ends the update from the shapes' bounds: the large shapes, the fine grid's cells (from the
+    * mean extent of the others) and each fine shape's fine cells.
+    */
+  def endUpdate(): Unit =
+    val side = _gridSide
+    large.clear()
+    wide.clear()
+    // The large shapes, and the mean extent of the others, in shape order.
+    var extentSum = 0.0
+    var counted = 0
+    originX = Double.PositiveInfinity
+    originY = Double.PositiveInfinity
+    var i = 0
+    while i < count do
+      val p = placement(i)
+      if p == Large then large += i
+      else if p == Fine then
+        val x0 = boxMinX(i); val y0 = boxMinY(i)
+        extentSum += math.max(boxMaxX(i) - x0, boxMaxY(i) - y0)
+        counted += 1
+        if x0 < originX then originX = x0
+        if y0 < originY then originY = y0
       i += 1
     if counted == 0 then
       originX = 0

@@ -76,6 +76,8 @@ private[sims] final class ContactFinder:
   private val pairsTask: Workers.Task = index =>
     pairTests(index) = grid.findPairsOf(from(index), from(index + 1), pairRanges(index))
 
+  private val boundsTask: Workers.Task = index => grid.boundsOf(from(index), from(index + 1))
+
   /** Fills `table.current` with this step's contacts of `world`, whose bodies `bodies` holds,
     * with the world's broadphase in cells of `gridSide` and at most `maxPairs` candidate pairs,
     * the pairs shared out among `workers` when there are many.
@@ -176,9 +178,15 @@ private[sims] final class ContactFinder:
   private def findPairsShared(workers: Workers, world: World, gridSide: Double, maxPairs: Int,
       speculativeDistance: Double): Unit =
     val stages = world.collisionPipeline
-    stages.beginSharedPairs(world.shapeBuffer, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance,
-      world.timeStep)
+    val shapes = world.shapeBuffer
+    stages.beginSharedBounds(shapes, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance, world.timeStep)
     val count = ContactFinder.RangesPerWorker * workers.count
+    grid = stages.broadphase
+    ranges = count
+    items = shapes.length
+    try workers.run(count, boundsTask)
+    finally grid = null
+    stages.beginSharedPairs()
     if pairRanges.length < count then
       pairRanges = Array.fill(count)(PairBuffer())
       pairTests = new Array[Long](count)
