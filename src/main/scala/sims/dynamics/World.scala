@@ -29,7 +29,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
   private val bodyBuffer = ArrayBuffer.empty[Body]
   private val jointBuffer = ArrayBuffer.empty[Joint]
   private val shapeList = ShapeList()
-  private val beforeStep = WorldState.empty
+  private[sims] val stateBeforeStep = WorldState.empty // the step's own save (see Solver.savesBodies)
 
   /** The world's one broadphase, list of candidate pairs and narrowphase, shared by both steps
     * and the queries (made before the detector, which uses them).
@@ -183,7 +183,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     */
   def step(): Unit =
     checkJoints()
-    beforeStep.save(this, withSolvers = false)
+    stateBeforeStep.saveForStep(this)
     beginCarriedStates()
     startEvents()
     shapesMoved()
@@ -219,7 +219,7 @@ class World(makeDetector: World => Detector = GridDetector(_))
     */
   private def undoStep(): Unit =
     unbreakJoints() // first: the saved state is of the joints before the step
-    beforeStep.load(this)
+    stateBeforeStep.load(this)
     undoEvents()
     undoCarriedStates()
 

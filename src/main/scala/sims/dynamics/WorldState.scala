@@ -11,6 +11,9 @@ final class WorldState private ():
   private var bodies = Array.empty[Body]
   private var values = Array.empty[Double]
   private var time = 0.0
+  // Whether `bodies` and `values` hold the bodies of this save (see `begin`); the list saved from.
+  private var withBodies = false
+  private var list: scala.collection.mutable.ArrayBuffer[Body] = null
   private var joints = Array.empty[sims.dynamics.joints.Joint]
   // For a snapshot: the solvers' carried states, by workspace (null for a step's own save).
   private var carried: Array[AnyRef] = null
@@ -27,6 +30,26 @@ final class WorldState private ():
     * save leaves those to `CarriedState.beginStep`, which copies nothing).
     */
   private[sims] def save(world: World, withSolvers: Boolean = true): Unit =
+    begin(world, withSolvers)
+    saveAllBodies()
+
+  /** Saves every body of the world given to `begin`. */
+  private[sims] def saveAllBodies(): Unit =
+    saveBodies(0, bodies.length)
+    bodiesSaved()
+
+  /** A step's own save: all but the solvers' carried data, and the bodies unless its solver
+    * saves them itself as it reads them (`Solver.savesBodies`).
+    */
+  private[sims] def saveForStep(world: World): Unit =
+    begin(world, withSolvers = false)
+    if !world.solver.savesBodies then saveAllBodies()
+
+  /** Saves all but the bodies (see `save`) and makes room for them: `saveBodies` takes them, in
+    * one range or several, then `bodiesSaved` says they are all in. Until then `load` leaves the
+    * bodies as they are (a solver that saves them as it reads them has not changed them yet).
+    */
+  private[sims] def begin(world: World, withSolvers: Boolean): Unit =
     saveJoints(world)
     carried =
       if !withSolvers then null
@@ -34,26 +57,40 @@ final class WorldState private ():
     if withSolvers then
       touching = world.contactTracker.openPairs()
       overlapping = world.sensorTracker.openPairs()
-    val bs = world.bodies
-    if bodies.length != bs.length then
-      bodies = new Array[Body](bs.length)
-      values = new Array[Double](bs.length * WorldState.PerBody)
+    list = world.bodyList
+    if bodies.length != list.length then
+      bodies = new Array[Body](list.length)
+      values = new Array[Double](list.length * WorldState.PerBody)
     time = world.time
-    var i = 0
-    while i < bs.length do
-      val b = bs(i)
-      bodies(i) = b
-      val k = i * WorldState.PerBody
-      values(k) = b.x; values(k + 1) = b.y; values(k + 2) = b.angle
-      values(k + 3) = b.vx; values(k + 4) = b.vy; values(k + 5) = b.w
-      values(k + 6) = b.fx; values(k + 7) = b.fy; values(k + 8) = b.tau
-      values(k + 9) = if b.isAwake then 1 else 0; values(k + 10) = b.sleepTime
-      values(k + 11) = b.sleepIsland.toDouble // exact: island numbers stay far below 2^53
+    withBodies = false
+
+  /** Saves bodies `from` until `until` of the world given to `begin`. Writes their slots only:
+    * ranges may be saved on several threads at once.
+    */
+  private[sims] def saveBodies(from: Int, until: Int): Unit =
+    var i = from
+    while i < until do
+      saveBody(i, list(i))
       i += 1
+
+  /** Saves body `b`, number i of the world given to `begin`. */
+  private[sims] def saveBody(i: Int, b: Body): Unit =
+    if bodies(i) ne b then bodies(i) = b // no write barrier for the same body as last time
+    val k = i * WorldState.PerBody
+    values(k) = b.x; values(k + 1) = b.y; values(k + 2) = b.angle
+    values(k + 3) = b.vx; values(k + 4) = b.vy; values(k + 5) = b.w
+    values(k + 6) = b.fx; values(k + 7) = b.fy; values(k + 8) = b.tau
+    values(k + 9) = if b.isAwake then 1 else 0; values(k + 10) = b.sleepTime
+    values(k + 11) = b.sleepIsland.toDouble // exact: island numbers stay far below 2^53
+
+  /** Every body is saved (see `begin`). */
+  private[sims] def bodiesSaved(): Unit =
+    list = null
+    withBodies = true
 
   private[sims] def load(world: World): Unit =
     val bs = world.bodies
-    if bs.length != bodies.length || bs.indices.exists(i => bs(i) ne bodies(i)) then
+    if withBodies && (bs.length != bodies.length || bs.indices.exists(i => bs(i) ne bodies(i))) then
       throw IllegalArgumentException("state was taken of a world with other bodies")
     val js = world.joints
     if js.length != joints.length || js.indices.exists(i => js(i) ne joints(i)) then
@@ -68,7 +105,7 @@ final class WorldState private ():
       world.restoreEvents(touching, overlapping)
     world.time = time
     var i = 0
-    while i < bodies.length do
+    while withBodies && i < bodies.length do
       val b = bodies(i)
       val k = i * WorldState.PerBody
       b.x = values(k); b.y = values(k + 1); b.angle = values(k + 2)

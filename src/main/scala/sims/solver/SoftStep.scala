@@ -121,10 +121,11 @@ final case class SoftStep(
     var substep = 0
     while substep < substeps do
       world.stage = "integrateVelocities"
-      integrateVelocities(world, workspace, h)
-      if substep == 0 then
+      // The first substep checks the forces and velocities before the contacts spread a
+      // non-finite velocity to other bodies (NaN on a fixed one): the exact checks, which name
+      // the body, only when a range's sum is not finite.
+      if !integrateVelocities(world, workspace, h, check = substep == 0) then
         world.guard("joint forces", Checked.Forces)
-        // Before the contacts spread a non-finite velocity to other bodies (NaN on a fixed one).
         val failed = workspace.bodies.firstNonFiniteVelocity()
         if failed >= 0 then world.guardFailure(failed, "integrateVelocities", Checked.Velocities)
       world.stage = "warmStart"
@@ -156,6 +157,9 @@ final case class SoftStep(
   /** The soft step reports the contacts that touch itself (see [[sims.solver.soft.ContactTouching]]). */
   override private[sims] def reportsTouching: Boolean = true
 
+  /** The soft step saves the bodies' state as it loads them (see [[sims.solver.soft.SoftBodies.loadRange]]). */
+  override private[sims] def savesBodies: Boolean = true
+
   private def bulletsOf(world: World): ContinuousCollision =
     world.workspace(classOf[ContinuousCollision], ContinuousCollision())
 
@@ -172,7 +176,7 @@ final case class SoftStep(
 
   private def loadBodies(world: World, workspace: SoftWorkspace, h: Double): Unit =
     val bodies = workspace.bodies
-    workspace.passes.load(pool, world.bodyList, h)
+    workspace.passes.load(pool, world.bodyList, world.stateBeforeStep, h)
     if bodies.anyAsleep then wakeJointed(world, bodies)
     workspace.joints.sort(world, bodies, directJoints)
 
@@ -236,15 +240,17 @@ final case class SoftStep(
     workspace.joints.trees.markTouched(workspace.table.current, workspace.bodies)
 
   /** Gravity and forces: v += h (g + F/m), w += h tau/I for every moving body; the force
-    * joints' forces are computed from the substep's placements and velocities.
+    * joints' forces are computed from the substep's placements and velocities. With `check`,
+    * whether every body's forces and velocities are finite (else true).
     */
-  private def integrateVelocities(world: World, workspace: SoftWorkspace, h: Double): Unit =
+  private def integrateVelocities(world: World, workspace: SoftWorkspace, h: Double, check: Boolean): Boolean =
     val bodies = workspace.bodies
     if workspace.joints.forceJoints.nonEmpty then applyForceJoints(workspace)
     val gx = world.gravity.x
     val gy = world.gravity.y
-    workspace.passes.integrateVelocities(pool, gx, gy, h)
+    val finite = workspace.passes.integrateVelocities(pool, gx, gy, h, check)
     ContactConstraints.addFreeMotion(workspace.table.current, bodies, gx, gy, h)
+    finite
 
   /** The force joints' forces at the substep's placements and velocities, added to the user's. */
   private def applyForceJoints(workspace: SoftWorkspace): Unit =

@@ -32,3 +32,9 @@ trait Solver:
     * `contacts` with a point at or below zero separation after each step.
     */
   private[sims] def reportsTouching: Boolean = false
+
+  /** Whether the solver saves each body's state before it changes it, into the world's
+    * `stateBeforeStep` (`saveBodies` or `saveBody`, then `bodiesSaved`), as it reads the bodies
+    * anyway; otherwise the world saves them before the step.
+    */
+  private[sims] def savesBodies: Boolean = false

@@ -96,3 +96,37 @@ class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
       world.step() // and the world goes on
       java.lang.Double.isFinite(bodies(2500).pos.x) shouldBe true
     }
+
+  test(
+    "SoftStep(workers = 2): a failed step restores what the step saved as it loaded the bodies: a body added since the last step, forces, a sleeper's rest") {
+    val world = World()
+    world.gravity = Vector2D.Null
+    world.solver = SoftStep(workers = 2)
+    val bodies =
+      for i <- 0 until 3000 yield
+        val ball = Circle(0.1, 1)
+        ball.collidable = false
+        ball.pos = Vector2D(i * 0.3, 0)
+        val body = ball.asBody
+        world += body
+        body
+    for _ <- 1 to 40 do world.step() // at rest: resting times grow
+    val resting = bodies(7).sleepTime
+    resting should be > 0.0
+    val late = Circle(0.1, 1)
+    late.collidable = false
+    late.pos = Vector2D(0, 5)
+    val added = late.asBody
+    world += added // the saved state's arrays grow by one body
+    added.linearVelocity = Vector2D(0.5, 0)
+    bodies(12).applyForce(Vector2D(3, -2))
+    bodies(2999).pos = Vector2D(1.79e308, 0)
+    bodies(2999).linearVelocity = Vector2D(1e308, 0)
+    val before = StateHash(world)
+    val error = intercept[ArithmeticException](world.step())
+    error.getMessage should include("body 2999")
+    StateHash(world) shouldBe before
+    added.linearVelocity shouldBe Vector2D(0.5, 0)
+    bodies(12).force shouldBe Vector2D(3, -2)
+    bodies(7).sleepTime shouldBe resting
+  }

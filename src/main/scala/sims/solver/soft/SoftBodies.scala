@@ -1,7 +1,7 @@
 package sims.solver.soft
 
 import scala.collection.mutable.ArrayBuffer
-import sims.dynamics.Body
+import sims.dynamics.{Body, WorldState}
 
 /** The bodies of a world during one soft step, in flat arrays indexed by `body.index`, so the
   * substeps' loops read and write contiguous doubles instead of chasing body objects.
@@ -49,15 +49,17 @@ private[sims] final class SoftBodies:
     count = list.length
     if bodies.length < count then grow(math.max(count, 2 * bodies.length))
 
-  /** Takes the state of bodies `from` until `until` of `list`; returns `Asleep` if
-    * one of them sleeps, plus `Damped` if one has a damping. Writes those bodies' slots only:
-    * ranges may be taken on several threads at once.
+  /** Takes the state of bodies `from` until `until` of `list`, and saves it into `saved` (the
+    * world's state before the step: one read of each body for both); returns `Asleep` if one of
+    * them sleeps, plus `Damped` if one has a damping. Writes those bodies' slots only: ranges may
+    * be taken on several threads at once.
     */
-  def loadRange(list: ArrayBuffer[Body], h: Double, from: Int, until: Int): Int =
+  def loadRange(list: ArrayBuffer[Body], saved: WorldState, h: Double, from: Int, until: Int): Int =
     var flags = 0
     var i = from
     while i < until do
       val b = list(i)
+      saved.saveBody(i, b)
       if bodies(i) ne b then bodies(i) = b // no write barrier for the same body as last step
       gravityScale(i) = b.gravityScale
       if b.damped then
@@ -105,6 +107,20 @@ private[sims] final class SoftBodies:
   inline def y(i: Int): Double = startY(i) + state(i * Stride + ShiftY)
   /** Current rotation of body i. */
   inline def angle(i: Int): Double = startAngle(i) + state(i * Stride + Turn)
+
+  /** Whether the substep forces and the velocities of bodies `from` until `until` are all
+    * finite. One sum per range: finite values sum to a finite value or overflow to an infinity,
+    * so a false answer only sends the caller to the exact checks.
+    */
+  def finiteMotion(from: Int, until: Int): Boolean =
+    var sum = 0.0
+    var i = from
+    while i < until do
+      val k = i * Stride
+      sum += (substepForceX(i) + substepForceY(i) + substepTorque(i)) +
+        (state(k + VelocityX) + state(k + VelocityY) + state(k + AngularVelocity))
+      i += 1
+    finite(sum)
 
   /** The first body whose velocities are not all finite, or -1. */
   def firstNonFiniteVelocity(): Int =

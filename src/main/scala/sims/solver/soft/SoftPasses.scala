@@ -35,26 +35,35 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     ContactConstraints.solve(workspace.table.current, workspace.bodies, blocks.order, blocks.start(block),
       blocks.start(block + 1), inverseH, contactSpeed, useBias)
 
-  private val velocitiesTask: Workers.Task = index => integrateVelocities(from(index), from(index + 1))
+  private val velocitiesTask: Workers.Task = index =>
+    integrateVelocities(from(index), from(index + 1))
+    if checking then
+      rangeResults(index) = if workspace.bodies.finiteMotion(from(index), from(index + 1)) then 0 else 1
+
+  // Whether `integrateVelocities` checks the forces and velocities it leaves.
+  private var checking = false
 
   private val positionsTask: Workers.Task = index => integratePositions(from(index), from(index + 1))
 
   // The bodies' list being loaded, and per range what `SoftBodies.loadRange` or `finishRange` found.
   private var list: scala.collection.mutable.ArrayBuffer[sims.dynamics.Body] = null
+  private var saved: sims.dynamics.WorldState = null
   private var rangeResults = new Array[Int](1)
 
   private val loadTask: Workers.Task = index =>
-    rangeResults(index) = workspace.bodies.loadRange(list, h, from(index), from(index + 1))
+    rangeResults(index) = workspace.bodies.loadRange(list, saved, h, from(index), from(index + 1))
 
   // The world whose step is closing (see `close`).
   private var closing: sims.dynamics.World = null
 
   private val closeTask: Workers.Task = index =>
-    if index == 0 then workspace.table.indexCurrent()
-    else
-      val world = closing
-      if world.enableContactEvents then reportTouching(Workers.Serial, world.contactTracker)
-      workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
+    val world = closing
+    index match
+      case 0 =>
+        if world.enableContactEvents then
+          ContactTouching.report(workspace.table.current, world.contactTracker, touchingPoints, touchingSums)
+      case 1 => workspace.table.indexCurrent()
+      case _ => workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
 
   private val finishTask: Workers.Task = index =>
     rangeResults(index) = if workspace.bodies.finishRange(from(index), from(index + 1)) then 0 else 1
@@ -86,35 +95,45 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     this.useBias = useBias
     byLevel(workers, solveTask)
 
-  /** Gravity and forces over a substep h for every moving body: v += h (g + F/m), w += h tau/I. */
-  def integrateVelocities(workers: Workers, gx: Double, gy: Double, h: Double): Unit =
+  /** Gravity and forces over a substep h for every moving body: v += h (g + F/m), w += h tau/I.
+    * With `check`, returns whether every body's forces and velocities are finite after it (see
+    * [[SoftBodies.finiteMotion]]); otherwise true.
+    */
+  def integrateVelocities(workers: Workers, gx: Double, gy: Double, h: Double, check: Boolean): Boolean =
     this.gx = gx
     this.gy = gy
     this.h = h
+    checking = check
     inRanges(workers, workspace.bodies.count, velocitiesTask)
+    checking = false
+    !check || allRangesPassed
 
-  /** Reports this step's touching contacts to `tracker` (see [[ContactTouching]]): measured in
-    * ranges, reported in contact order. (Measured by the workers, the contacts' blocks come from
-    * the caches of the cores that solved them in parallel, not one by one to the caller's.)
+  /** Measures this step's touching contacts for the contact events (see [[ContactTouching]]), in
+    * ranges: the workers take the contacts' blocks from the caches of the cores that solved them,
+    * not one by one into the caller's. `close` reports them.
     */
-  def reportTouching(workers: Workers, tracker: sims.collision.PairTracker): Unit =
+  private def measureTouching(workers: Workers): Unit =
     val contacts = workspace.table.current
     if touchingPoints.length < contacts.count then
       touchingPoints = new Array[Int](2 * contacts.count)
       touchingSums = new Array[Double](2 * ContactTouching.SumStride * contacts.count)
     inRanges(workers, contacts.count, touchingTask)
-    ContactTouching.report(contacts, tracker, touchingPoints, touchingSums)
 
-  /** Takes the state of the bodies of `list` at the start of a step of substeps `h`, in ranges
-    * (see [[SoftBodies.loadRange]]).
+  /** Takes the state of the bodies of `list` at the start of a step of substeps `h`, in ranges,
+    * and saves it into `saved` (see [[SoftBodies.loadRange]]).
     */
-  def load(workers: Workers, list: scala.collection.mutable.ArrayBuffer[sims.dynamics.Body], h: Double): Unit =
+  def load(workers: Workers, list: scala.collection.mutable.ArrayBuffer[sims.dynamics.Body],
+      saved: sims.dynamics.WorldState, h: Double): Unit =
     val bodies = workspace.bodies
     bodies.begin(list)
     this.list = list
+    this.saved = saved
     this.h = h
-    inRanges(workers, bodies.count, loadTask)
-    this.list = null
+    try inRanges(workers, bodies.count, loadTask)
+    finally
+      this.list = null
+      this.saved = null
+    saved.bodiesSaved()
     var flags = 0
     var r = 0
     while r < ranges do
@@ -127,18 +146,24 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     */
   def finish(workers: Workers): Boolean =
     inRanges(workers, workspace.bodies.count, finishTask)
+    allRangesPassed
+
+  // Whether every range of the stage just run left 0 in `rangeResults`.
+  private def allRangesPassed: Boolean =
     var r = 0
     while r < ranges && rangeResults(r) == 0 do r += 1
     r == ranges
 
-  /** The step's last work on its contacts, two tasks at once (they read the contacts only and
-    * write apart): the index of this step's contacts for the next step's lookups
-    * ([[ContactTable.indexCurrent]]); the touching contacts reported to `world`'s contact events
-    * (when on) and the sleep islands brought up to date.
+  /** The step's last work on its contacts: with `world`'s contact events on, the touching
+    * contacts measured in ranges; then three tasks at once, which read the contacts and write
+    * apart: the touching contacts reported to the events (in contact order), the index of this
+    * step's contacts for the next step's lookups ([[ContactTable.indexCurrent]]), and the sleep
+    * islands brought up to date (the bodies' sleep fields).
     */
   def close(workers: Workers, world: sims.dynamics.World): Unit =
+    if world.enableContactEvents then measureTouching(workers)
     closing = world
-    try workers.run(2, closeTask)
+    try workers.run(3, closeTask)
     finally closing = null
 
   /** Every body's placement over a substep h (see `integratePositions` below). */
