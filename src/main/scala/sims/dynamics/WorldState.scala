@@ -1,13 +1,15 @@
 package sims.dynamics
 
 /** The dynamic state of a world: time; for every body, position, rotation, velocities, force
-  * and torque, and whether it sleeps (its resting time and island); what the solvers carry from
+  * and torque, whether it sleeps (its resting time and island) and whether the user placed it
+  * since its last step (a sleeper on it then wakes); what the solvers carry from
   * step to step (the soft step's contact table and its joints' impulses, its warm start); and
   * the pairs of shapes touching and overlapping sensors (the contact and sensor events' open
   * pairs).
   * Restoring it and stepping again replays the run, and its events, bit for bit.
   */
 final class WorldState private ():
+  import WorldState.{Awake, MovedByUser}
   private var bodies = Array.empty[Body]
   private var values = Array.empty[Double]
   private var time = 0.0
@@ -80,7 +82,8 @@ final class WorldState private ():
     values(k) = b.x; values(k + 1) = b.y; values(k + 2) = b.angle
     values(k + 3) = b.vx; values(k + 4) = b.vy; values(k + 5) = b.w
     values(k + 6) = b.fx; values(k + 7) = b.fy; values(k + 8) = b.tau
-    values(k + 9) = if b.isAwake then 1 else 0; values(k + 10) = b.sleepTime
+    values(k + 9) = (if b.isAwake then Awake else 0) + (if b.movedByUser then MovedByUser else 0)
+    values(k + 10) = b.sleepTime
     values(k + 11) = b.sleepIsland.toDouble // exact: island numbers stay far below 2^53
 
   /** Every body is saved (see `begin`). */
@@ -111,7 +114,9 @@ final class WorldState private ():
       b.x = values(k); b.y = values(k + 1); b.angle = values(k + 2)
       b.vx = values(k + 3); b.vy = values(k + 4); b.w = values(k + 5)
       b.fx = values(k + 6); b.fy = values(k + 7); b.tau = values(k + 8)
-      b.restoreSleep(values(k + 9) != 0, values(k + 10), values(k + 11).toLong)
+      val flags = values(k + 9).toInt
+      b.restoreSleep((flags & Awake) != 0, values(k + 10), values(k + 11).toLong)
+      b.movedByUser = (flags & MovedByUser) != 0
       b.placeShapes()
       // Islands numbered after it stay apart from the restored ones.
       if b.sleepIsland >= world.sleepIslands && b.sleepIsland != Long.MaxValue then world.sleepIslands = b.sleepIsland
@@ -130,4 +135,7 @@ final class WorldState private ():
 
 private[sims] object WorldState:
   private val PerBody = 12
+  // A body's flags, in its value 9: awake; placed by the user since its last soft step.
+  private inline val Awake = 1
+  private inline val MovedByUser = 2
   def empty: WorldState = new WorldState()

@@ -317,7 +317,7 @@ final case class SoftStep(
       Defaults.RestitutionIterations, Defaults.RestitutionTolerance, world.gravity.x, world.gravity.y, h)
 
   private def finish(world: World, workspace: SoftWorkspace): Unit =
-    val finite = workspace.passes.finish(pool)
+    val finite = workspace.passes.finish(pool, world)
     val joints = workspace.joints.constraints
     var i = 0
     while i < joints.length do

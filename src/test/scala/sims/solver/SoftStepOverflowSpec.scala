@@ -98,7 +98,7 @@ class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
     }
 
   test(
-    "SoftStep(workers = 2): a failed step restores what the step saved as it loaded the bodies: a body added since the last step, forces, a sleeper's rest") {
+    "SoftStep(workers = 2): a failed step restores what the step saved as it loaded the bodies: a body added since the last step, forces, a sleeper's rest, a fixed body moved") {
     val world = World()
     world.gravity = Vector2D.Null
     world.solver = SoftStep(workers = 2)
@@ -110,7 +110,13 @@ class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
         val body = ball.asBody
         world += body
         body
+    val post = Rectangle(0.1, 0.1, 1)
+    post.pos = Vector2D(-5, 0)
+    val fixed = post.asBody
+    fixed.fixed = true
+    world += fixed
     for _ <- 1 to 40 do world.step() // at rest: resting times grow
+    fixed.pos = Vector2D(-5, 1) // sleepers on a fixed body the user moved wake at its next step
     val resting = bodies(7).sleepTime
     resting should be > 0.0
     val late = Circle(0.1, 1)
@@ -129,4 +135,8 @@ class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
     added.linearVelocity shouldBe Vector2D(0.5, 0)
     bodies(12).force shouldBe Vector2D(3, -2)
     bodies(7).sleepTime shouldBe resting
+    fixed.movedByUser shouldBe true
+    bodies(2999).linearVelocity = Vector2D(-1, 0)
+    world.step()
+    fixed.movedByUser shouldBe false
   }

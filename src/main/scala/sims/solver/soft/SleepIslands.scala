@@ -20,11 +20,18 @@ private[sims] final class SleepIslands:
 
   /** Updates the resting times and puts the islands that rested long enough to sleep. */
   def update(world: World, bodies: SoftBodies, contacts: Contacts, joints: collection.IndexedSeq[sims.dynamics.joints.Joint]): Unit =
+    if rest(world, bodies, 0, bodies.count) then sleep(world, bodies, contacts, joints)
+
+  /** Updates the resting times of bodies `from` until `until` (and forgets that the user placed
+    * them); whether one of them has rested long enough to sleep. Writes those bodies only: ranges
+    * may rest on several threads at once.
+    */
+  def rest(world: World, bodies: SoftBodies, from: Int, until: Int): Boolean =
     val dt = world.timeStep
     val sleepOn = world.enableSleep
     var ready = false
-    var i = 0
-    while i < bodies.count do
+    var i = from
+    while i < until do
       val b = bodies.bodies(i)
       b.movedByUser = false
       if bodies.invMass(i) != 0 then
@@ -37,9 +44,12 @@ private[sims] final class SleepIslands:
           b.sleepTime += dt
           if b.sleepTime >= Defaults.TimeToSleep then ready = true
       i += 1
-    if ready then sleep(world, bodies, contacts, joints)
+    ready
 
-  private def sleep(world: World, bodies: SoftBodies, contacts: Contacts,
+  /** Joins the awake bodies into islands by `contacts` and `joints`, and puts every island whose
+    * bodies have all rested long enough to sleep (after `rest` said one has).
+    */
+  def sleep(world: World, bodies: SoftBodies, contacts: Contacts,
       joints: collection.IndexedSeq[sims.dynamics.joints.Joint]): Unit =
     val n = bodies.count
     if parent.length < n then

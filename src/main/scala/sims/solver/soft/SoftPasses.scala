@@ -63,10 +63,16 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
         if world.enableContactEvents then
           ContactTouching.report(workspace.table.current, world.contactTracker, touchingPoints, touchingSums)
       case 1 => workspace.table.indexCurrent()
-      case _ => workspace.islands.update(world, workspace.bodies, workspace.table.current, world.jointList)
+      case _ => if readyToSleep then workspace.islands.sleep(world, workspace.bodies, workspace.table.current, world.jointList)
 
   private val finishTask: Workers.Task = index =>
-    rangeResults(index) = if workspace.bodies.finishRange(from(index), from(index + 1)) then 0 else 1
+    val finite = workspace.bodies.finishRange(from(index), from(index + 1))
+    // The resting times while the range's bodies are in this core's cache.
+    val ready = workspace.islands.rest(closing, workspace.bodies, from(index), from(index + 1))
+    rangeResults(index) = (if finite then 0 else SoftPasses.NotFinite) | (if ready then SoftPasses.ReadyToSleep else 0)
+
+  // Whether a body of the step's `finish` has rested long enough to sleep.
+  private var readyToSleep = false
 
   // Per contact: its touching points, and its sums for the contact events (see ContactTouching).
   private var touchingPoints = new Array[Int](0)
@@ -141,12 +147,21 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
       r += 1
     bodies.loaded(flags)
 
-  /** Writes the bodies back at the end of the step, in ranges (see [[SoftBodies.finishRange]]);
-    * whether every body's velocities and placement are finite.
+  /** Writes the bodies back at the end of `world`'s step, in ranges (see
+    * [[SoftBodies.finishRange]]), and brings their resting times up to date
+    * ([[SleepIslands.rest]]); whether every body's velocities and placement are finite.
     */
-  def finish(workers: Workers): Boolean =
-    inRanges(workers, workspace.bodies.count, finishTask)
-    allRangesPassed
+  def finish(workers: Workers, world: sims.dynamics.World): Boolean =
+    closing = world
+    try inRanges(workers, workspace.bodies.count, finishTask)
+    finally closing = null
+    var flags = 0
+    var r = 0
+    while r < ranges do
+      flags |= rangeResults(r)
+      r += 1
+    readyToSleep = (flags & SoftPasses.ReadyToSleep) != 0
+    (flags & SoftPasses.NotFinite) == 0
 
   // Whether every range of the stage just run left 0 in `rangeResults`.
   private def allRangesPassed: Boolean =
@@ -157,8 +172,8 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   /** The step's last work on its contacts: with `world`'s contact events on, the touching
     * contacts measured in ranges; then three tasks at once, which read the contacts and write
     * apart: the touching contacts reported to the events (in contact order), the index of this
-    * step's contacts for the next step's lookups ([[ContactTable.indexCurrent]]), and the sleep
-    * islands brought up to date (the bodies' sleep fields).
+    * step's contacts for the next step's lookups ([[ContactTable.indexCurrent]]), and, if a body
+    * rested long enough in `finish`, the islands put to sleep (the bodies' sleep fields).
     */
   def close(workers: Workers, world: sims.dynamics.World): Unit =
     if world.enableContactEvents then measureTouching(workers)
@@ -244,3 +259,6 @@ private[sims] object SoftPasses:
   inline val MinimumShared = 2048
   /** Ranges per worker in a shared stage: a worker that starts late finds work left. */
   inline val RangesPerWorker = 4
+  /** What a range of `finish` found: a body not finite; a body rested long enough to sleep. */
+  inline val NotFinite = 1
+  inline val ReadyToSleep = 2
