@@ -37,7 +37,6 @@ private[sims] final class ContactBlocks:
   private var coordinate = new Array[Double](0)
   private val histogram = new Array[Int](Bins)
   private val bySlab = new Array[Int](Bins)
-  private val filled = new Array[Int](BlockCount)
 
   /** The first block of `level` (0 to `levels - 1`). */
   def levelStart(level: Int): Int = if levels == 1 then 0 else BlockCount + 1 - (2 << (Depth - level))
@@ -45,10 +44,23 @@ private[sims] final class ContactBlocks:
   /** The number of blocks of `level`. */
   def levelSize(level: Int): Int = if levels == 1 then 1 else 1 << (Depth - level)
 
+  // The split under way: its contacts, and the ranges of them its stages share out among the
+  // workers; per range and block, the range's contacts in the block, then where the next goes
+  // (a row of `RowStride` per range: ranges on different cores write different cache lines).
+  private var splitting: Contacts = null
+  private var ranges = 1
+  private var items = 0
+  private var filled = new Array[Int](RowStride)
+
+  private val blocksTask: sims.solver.Workers.Task = r => assignBlocks(from(r), from(r + 1), r * RowStride)
+  private val sortTask: sims.solver.Workers.Task = r => sortRange(from(r), from(r + 1), r * RowStride)
+  private val interleaveTask: sims.solver.Workers.Task = k => interleave(start(k), start(k + 1), identity = false)
+
   /** Cuts the first `active` contacts of `contacts` into blocks, between the `bodies`, under
-    * gravity `(gx, gy)`.
+    * gravity `(gx, gy)`; the contacts' blocks and their order found in ranges by the `workers`
+    * (the same blocks and order for any number).
     */
-  def split(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double): Unit =
+  def split(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, workers: sims.solver.Workers): Unit =
     val active = contacts.active
     if order.length < active then
       order = new Array[Int](2 * active)
@@ -62,35 +74,64 @@ private[sims] final class ContactBlocks:
     else
       levels = Depth + 1
       cutSlabs(bodies, gx, gy)
-      var c = 0
-      while c < active do
-        val a = slab(contacts.bodyA(c))
-        val b = slab(contacts.bodyB(c))
-        blockOf(c) =
-          if a < 0 then math.max(b, 0)
-          else if b < 0 || a == b then a
-          else
-            // The lowest common node of leaves a and b: `level` bits up, at index a >> level.
-            val level = 32 - Integer.numberOfLeadingZeros(a ^ b)
-            levelStart(level) + (a >> level)
-        c += 1
-      // Counting sort by block, each block in the collision stage's order.
-      java.util.Arrays.fill(filled, 0)
-      c = 0
-      while c < active do { filled(blockOf(c)) += 1; c += 1 }
-      start(0) = 0
-      var k = 0
-      while k < BlockCount do { start(k + 1) = start(k) + filled(k); filled(k) = start(k); k += 1 }
-      c = 0
-      while c < active do
-        val k = blockOf(c)
-        sorted(filled(k)) = c
-        filled(k) += 1
-        c += 1
-      k = 0
-      while k < BlockCount do
-        interleave(start(k), start(k + 1), identity = false)
-        k += 1
+      splitting = contacts
+      items = active
+      ranges = if workers.count == 1 then 1 else SoftPasses.RangesPerWorker * workers.count
+      if filled.length < ranges * RowStride then filled = new Array[Int](ranges * RowStride)
+      try
+        workers.run(ranges, blocksTask)
+        // Counting sort by block, each block in the collision stage's order: block by block,
+        // range by range, where each range's contacts of the block go.
+        var placed = 0
+        var k = 0
+        while k < BlockCount do
+          start(k) = placed
+          var r = 0
+          while r < ranges do
+            val n = filled(r * RowStride + k)
+            filled(r * RowStride + k) = placed
+            placed += n
+            r += 1
+          k += 1
+        start(BlockCount) = placed
+        workers.run(ranges, sortTask)
+        workers.run(BlockCount, interleaveTask)
+      finally splitting = null
+
+  // Where range r of the split under way starts.
+  private def from(r: Int): Int = (items.toLong * r / ranges).toInt
+
+  /** Gives contacts `from` until `until` of the split their blocks, and counts them by block at
+    * `filled(row + block)`.
+    */
+  private def assignBlocks(from: Int, until: Int, row: Int): Unit =
+    val contacts = splitting
+    java.util.Arrays.fill(filled, row, row + BlockCount, 0)
+    var c = from
+    while c < until do
+      val a = slab(contacts.bodyA(c))
+      val b = slab(contacts.bodyB(c))
+      val block =
+        if a < 0 then math.max(b, 0)
+        else if b < 0 || a == b then a
+        else
+          // The lowest common node of leaves a and b: `level` bits up, at index a >> level.
+          val level = 32 - Integer.numberOfLeadingZeros(a ^ b)
+          levelStart(level) + (a >> level)
+      blockOf(c) = block
+      filled(row + block) += 1
+      c += 1
+
+  /** Puts contacts `from` until `until` in `sorted`, each at the next place of its block for
+    * this range (`filled(row + block)`).
+    */
+  private def sortRange(from: Int, until: Int, row: Int): Unit =
+    var c = from
+    while c < until do
+      val k = row + blockOf(c)
+      sorted(filled(k)) = c
+      filled(k) += 1
+      c += 1
 
   /** Writes `order(from until until)`: the block's contacts (`sorted(from until until)`, or
     * `from until until` themselves when `identity`), their two halves taken in turn.
@@ -184,5 +225,7 @@ private[sims] object ContactBlocks:
   inline val BlockCount = 2 * Leaves - 1
   /** Bins of the bodies' histogram along the cut. */
   inline val Bins = 1024
+  /** Ints per range's row of counts: the blocks, padded to two cache lines. */
+  inline val RowStride = 32
   /** Fewer contacts than this are one block: splitting costs more than sharing saves. */
   inline val MinimumSplit = 4096

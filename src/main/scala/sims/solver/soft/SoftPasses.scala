@@ -89,7 +89,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     val contacts = workspace.table.current
     contacts.ensureMasses()
     inRanges(workers, contacts.active, prepareTask)
-    blocks.split(contacts, workspace.bodies, gx, gy)
+    blocks.split(contacts, workspace.bodies, gx, gy, workers)
 
   /** Applies the contacts' accumulated impulses, block by block. */
   def warmStart(workers: Workers): Unit = byLevel(workers, warmStartTask)
