@@ -67,22 +67,29 @@ class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
     java.lang.Double.isFinite(ball.pos.x) shouldBe true
   }
 
+  /** 3,000 balls in a row that collide with nothing, no gravity, under `workers` workers: only
+    * the bodies' own stages see them (in ranges under two workers).
+    */
+  private def looseBalls(workers: Int): (World, IndexedSeq[Body]) =
+    val world = World()
+    world.gravity = Vector2D.Null
+    world.solver = SoftStep(workers = workers)
+    val bodies =
+      for i <- 0 until 3000 yield
+        val ball = Circle(0.1, 1)
+        ball.collidable = false
+        ball.pos = Vector2D(i * 0.3, 0)
+        val body = ball.asBody
+        world += body
+        body
+    (world, bodies)
+
   for workers <- Seq(1, 2) do
     test(
       s"SoftStep(workers = $workers): a position that overflows in the substeps fails the step at its end, naming the body, among 3,000 bodies") {
       // Bodies that collide with nothing, so that only the end of the step can see the overflow:
       // its finite check runs in ranges of bodies under two workers.
-      val world = World()
-      world.gravity = Vector2D.Null
-      world.solver = SoftStep(workers = workers)
-      val bodies =
-        for i <- 0 until 3000 yield
-          val ball = Circle(0.1, 1)
-          ball.collidable = false
-          ball.pos = Vector2D(i * 0.3, 0)
-          val body = ball.asBody
-          world += body
-          body
+      val (world, bodies) = looseBalls(workers)
       world.step()
       bodies(2500).pos = Vector2D(1.79e308, 0)
       bodies(2500).linearVelocity = Vector2D(1e308, 0) // finite, but 1/60 s of it overflows the position
@@ -99,17 +106,7 @@ class SoftStepOverflowSpec extends AnyFunSuite with Matchers:
 
   test(
     "SoftStep(workers = 2): a failed step restores what the step saved as it loaded the bodies: a body added since the last step, forces, a sleeper's rest, a fixed body moved") {
-    val world = World()
-    world.gravity = Vector2D.Null
-    world.solver = SoftStep(workers = 2)
-    val bodies =
-      for i <- 0 until 3000 yield
-        val ball = Circle(0.1, 1)
-        ball.collidable = false
-        ball.pos = Vector2D(i * 0.3, 0)
-        val body = ball.asBody
-        world += body
-        body
+    val (world, bodies) = looseBalls(workers = 2)
     val post = Rectangle(0.1, 0.1, 1)
     post.pos = Vector2D(-5, 0)
     val fixed = post.asBody

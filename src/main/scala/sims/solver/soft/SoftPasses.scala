@@ -53,7 +53,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   private val loadTask: Workers.Task = index =>
     rangeResults(index) = workspace.bodies.loadRange(list, saved, h, from(index), from(index + 1))
 
-  // The world whose step is closing (see `close`).
+  // The world whose step is ending (see `finish` and `close`).
   private var closing: sims.dynamics.World = null
 
   private val closeTask: Workers.Task = index =>
