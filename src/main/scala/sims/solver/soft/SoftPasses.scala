@@ -112,7 +112,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     checking = check
     inRanges(workers, workspace.bodies.count, velocitiesTask)
     checking = false
-    !check || allRangesPassed
+    !check || rangeFlags == 0
 
   /** Measures this step's touching contacts for the contact events (see [[ContactTouching]]), in
     * ranges: the workers take the contacts' blocks from the caches of the cores that solved them,
@@ -140,12 +140,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
       this.list = null
       this.saved = null
     saved.bodiesSaved()
-    var flags = 0
-    var r = 0
-    while r < ranges do
-      flags |= rangeResults(r)
-      r += 1
-    bodies.loaded(flags)
+    bodies.loaded(rangeFlags)
 
   /** Writes the bodies back at the end of `world`'s step, in ranges (see
     * [[SoftBodies.finishRange]]), and brings their resting times up to date
@@ -155,19 +150,18 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     closing = world
     try inRanges(workers, workspace.bodies.count, finishTask)
     finally closing = null
+    val flags = rangeFlags
+    readyToSleep = (flags & SoftPasses.ReadyToSleep) != 0
+    (flags & SoftPasses.NotFinite) == 0
+
+  // What the ranges of the stage just run found, their `rangeResults` or-ed together.
+  private def rangeFlags: Int =
     var flags = 0
     var r = 0
     while r < ranges do
       flags |= rangeResults(r)
       r += 1
-    readyToSleep = (flags & SoftPasses.ReadyToSleep) != 0
-    (flags & SoftPasses.NotFinite) == 0
-
-  // Whether every range of the stage just run left 0 in `rangeResults`.
-  private def allRangesPassed: Boolean =
-    var r = 0
-    while r < ranges && rangeResults(r) == 0 do r += 1
-    r == ranges
+    flags
 
   /** The step's last work on its contacts: with `world`'s contact events on, the touching
     * contacts measured in ranges; then three tasks at once, which read the contacts and write
