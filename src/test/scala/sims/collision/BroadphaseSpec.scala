@@ -80,6 +80,35 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
     }
   }
 
+  test("a large shape's pairs come last, large shape by large shape, each one's partners in shape order") {
+    // Floors 600 m long (far more than 64 cells of the grid: large shapes) at random heights,
+    // some far from everything, among random shapes; the grid finds the floors' partners in
+    // the fine cells under them, or checks every shape when those cells outnumber the shapes.
+    val floorHeight = Gen.oneOf(Gen.choose(-25.0, 25.0), Gen.const(5000.0))
+    forAll(Gen.listOfN(60, shape), Gen.listOfN(4, floorHeight), Gen.oneOf(0.5, 2.0), minSuccessful(40)) {
+      (shapes, heights, side) =>
+        val world = scene(shapes, side)
+        for y <- heights do
+          val floor = sims.dynamics.Rectangle(300, 0.3, 1)
+          floor.pos = Vector2D(0, y)
+          world += floor.asBody
+        val all = world.shapes
+        def cells(low: Double, high: Double) = math.floor(high / side) - math.floor(low / side) + 1
+        val large = all.filter(s => cells(s.minX, s.maxX) * cells(s.minY, s.maxY) > 64).map(_.worldIndex).toSet
+        val expected =
+          for
+            big <- large.toSeq.sorted
+            other <- all.sortBy(_.worldIndex)
+            j = other.worldIndex
+            if j != big && !(large(j) && j < big)
+            if all(big).AABB.overlaps(other.AABB) && PairFilter.accepts(all(big), other)
+          yield (math.min(j, big), math.max(j, big))
+        val (found, _) = ownOrderPairs(world, side, 0)
+        found.filter((a, b) => large(a) || large(b)) shouldBe expected
+        found.takeRight(expected.size) shouldBe expected
+    }
+  }
+
   test("the search shared out fails past maxPairs as one search does, naming the limit") {
     val world = World()
     for i <- 0 until 40 do

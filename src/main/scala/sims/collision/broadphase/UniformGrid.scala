@@ -50,6 +50,8 @@ private[sims] final class UniformGrid extends Broadphase:
   private var coarseX0, coarseY0 = new Array[Long](0)
   private val wide = ArrayBuffer.empty[Int]
   private val large = ArrayBuffer.empty[Int]
+  // A large shape's partners from the fine cells (see `partnersInCells`).
+  private var found = new Array[Int](0)
   private val grid = CellGrid()
   private var perFine = 1.0 // 1 / the fine cell side
   // The fine grid's cells count from the lower-left corner of the fine shapes' bounds, so that
@@ -227,18 +229,71 @@ private[sims] final class UniformGrid extends Broadphase:
     gridBuilt = true
     largePairs(pairs)
 
-  // Large shapes meet every collidable shape directly.
+  // Large shapes meet every collidable shape directly: each large shape, its partners by index
+  // (every other shape but the large ones before it, whose turn found the pair). The partners
+  // come from the fine cells under the large shape's bounds when there are fewer such cells than
+  // shapes (a floor under a row of boxes), else from all shapes; the same partners either way.
   private def largePairs(pairs: PairBuffer): Unit =
     var k = 0
     while k < large.length do
       val big = large(k)
-      var j = 0
-      while j < count do
-        val earlierLarge = j < big && placement(j) == Large
-        if j != big && placement(j) != Ignored && !earlierLarge && candidates(j, big) then
-          if j < big then pairs.add(j, big) else pairs.add(big, j)
-        j += 1
+      val partners = if fineMinX <= fineMaxX then partnersInCells(big) else -1
+      if partners < 0 then
+        var j = 0
+        while j < count do
+          val earlierLarge = j < big && placement(j) == Large
+          if j != big && placement(j) != Ignored && !earlierLarge && candidates(j, big) then
+            if j < big then pairs.add(j, big) else pairs.add(big, j)
+          j += 1
+      else
+        var n = 0
+        while n < partners do
+          val j = found(n)
+          if candidates(j, big) then
+            if j < big then pairs.add(j, big) else pairs.add(big, j)
+          n += 1
       k += 1
+
+  /** Puts into `found`, in index order, the shapes that may meet the large shape `big`: the fine
+    * shapes in the fine cells under its bounds (each once, in the cell holding the corner of the
+    * two boxes of cells' overlap), the wide ones and the large ones after it; returns how many,
+    * or -1 when its bounds cover more fine cells than there are shapes (then all are checked).
+    */
+  private def partnersInCells(big: Int): Int =
+    val x0 = math.max(0, fineCell(boxMinX(big) - originX, perFine))
+    val y0 = math.max(0, fineCell(boxMinY(big) - originY, perFine))
+    val x1 = math.min(fineCell(fineMaxX - originX, perFine), fineCell(boxMaxX(big) - originX, perFine))
+    val y1 = math.min(fineCell(fineMaxY - originY, perFine), fineCell(boxMaxY(big) - originY, perFine))
+    if x0 <= x1 && y0 <= y1 && cellCount(x0, x1, y0, y1) > count then -1
+    else
+      var n = 0
+      if found.length < count then found = new Array[Int](math.max(count, 2 * found.length))
+      var cxLong = x0.toLong
+      while cxLong <= x1 do
+        var cyLong = y0.toLong
+        while cyLong <= y1 do
+          var entry = grid.firstEntry(cxLong.toInt, cyLong.toInt)
+          while entry >= 0 do
+            val j = grid.shapeOf(entry)
+            if math.max(fineX0(j), x0) == cxLong && math.max(fineY0(j), y0) == cyLong then
+              found(n) = j
+              n += 1
+            entry = grid.nextEntry(entry)
+          cyLong += 1
+        cxLong += 1
+      var w = 0
+      while w < wide.length do
+        found(n) = wide(w)
+        n += 1
+        w += 1
+      var l = 0
+      while l < large.length do
+        if large(l) > big then
+          found(n) = large(l)
+          n += 1
+        l += 1
+      java.util.Arrays.sort(found, 0, n)
+      n
 
   /** Number of shapes of the last `update`. */
   def shapeCount: Int = count
