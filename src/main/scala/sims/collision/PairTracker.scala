@@ -65,6 +65,11 @@ private[sims] final class PairTracker(ordered: Boolean):
   // Set by `touchAllOpen`: this step keeps every open pair, and reports no other.
   private var allOpenTouched = false
   private val separation = ShapeSeparation()
+  // The finish under way (see `beginFinish`): its items (of the list, or the table's slots), and
+  // per item its verdict.
+  private var judging = 0
+  private var judgingList = false
+  private var verdicts = new Array[Byte](64)
 
   /** Counts the touches that probed the table, not finding their pair in the list. */
   private[collision] var probes: Long = 0
@@ -166,20 +171,55 @@ private[sims] final class PairTracker(ordered: Boolean):
     * open. Sorts the step's begins and ends by key and shows them.
     */
   def finishStep(world: World): Unit =
+    judge(world, 0, beginFinish(), separation)
+    endFinish()
+
+  /** Starts `finishStep` in parts: `judge` for every item from 0 until the number returned (0
+    * when every open pair stays), in ranges that may run at once, then `endFinish`.
+    */
+  def beginFinish(): Int =
+    judgingList = listKnown
+    judging = if allOpenTouched then 0 else if judgingList then listed else open.slots
+    if verdicts.length < judging then verdicts = new Array[Byte](math.max(judging, 2 * verdicts.length))
+    judging
+
+  /** Judges items `from` until `until` of the finish under way (see `beginFinish`): whether each
+    * open pair not touched this step may stay open (`keeps`), with `separation` for the shapes'
+    * distances. Writes the items' verdicts alone, and reads the shapes and `world`: ranges may run
+    * at once, each with a separation of its own, when no shape's caches are stale (see
+    * `Shape.refreshCaches`: a stale shape would refresh them as it is read).
+    */
+  def judge(world: World, from: Int, until: Int, separation: ShapeSeparation): Unit =
+    var i = from
+    while i < until do
+      val slot = if judgingList then listSlots(i) else i
+      val key = if judgingList then listKeys(i) else open.keyAt(slot)
+      val verdict =
+        if key < 0 || isTouched(slot) then Settled
+        else if keeps(open.firstAt(slot), open.secondAt(slot), key, world, separation) then Kept
+        else Ended
+      verdicts(i) = verdict.toByte
+      i += 1
+
+  /** Ends `finishStep` in parts: in the items' order, a pair kept open joins this step's touches
+    * (the next step's list), a pair ended leaves the table; then the step's events are shown.
+    */
+  def endFinish(): Unit =
     if allOpenTouched then
       // The open pairs stay as they were, and so does the list, unless pairs began besides.
       if touchCount > 0 then listKnown = false
     else
-      if listKnown then
-        var p = 0
-        while p < listed do
-          settle(listKeys(p), listSlots(p), world)
-          p += 1
-      else
-        var slot = 0
-        while slot < open.slots do
-          if open.keyAt(slot) >= 0 then settle(open.keyAt(slot), slot, world)
-          slot += 1
+      var i = 0
+      while i < judging do
+        val verdict = verdicts(i)
+        if verdict != Settled then
+          val slot = if judgingList then listSlots(i) else i
+          val key = if judgingList then listKeys(i) else open.keyAt(slot)
+          if verdict == Kept then addTouch(key, slot)
+          else
+            working.addEnd(key, open.firstAt(slot), open.secondAt(slot))
+            open.remove(slot)
+        i += 1
       // This step's touches and the pairs kept open are the open pairs: the next step's list.
       val keys = listKeys
       listKeys = touchKeys
@@ -192,21 +232,13 @@ private[sims] final class PairTracker(ordered: Boolean):
     show()
     finished = true
 
-  /** The open pair `key` in `slot`, if not touched this step: kept open (and listed) or ended. */
-  private def settle(key: Long, slot: Int, world: World): Unit =
-    if !isTouched(slot) then
-      if keeps(open.firstAt(slot), open.secondAt(slot), key, world) then addTouch(key, slot)
-      else
-        working.addEnd(key, open.firstAt(slot), open.secondAt(slot))
-        open.remove(slot)
-
   /** Whether an open pair not touched this step stays open: a contact pair (never a sensor
     * pair) whose shapes are still in `world` and may still collide there, and are at most
     * [[Defaults.ContactHysteresis]] apart. A pair of shapes resting on each other may lose its
     * contact for a step (the classic step's bounce of a few micrometres, the soft step's point
     * a hair above the surface); it does not end and begin again for that.
     */
-  private def keeps(first: Shape, second: Shape, key: Long, world: World): Boolean =
+  private def keeps(first: Shape, second: Shape, key: Long, world: World, separation: ShapeSeparation): Boolean =
     !ordered && inWorld(first, (key >>> 32).toInt, world) && inWorld(second, key.toInt, world) &&
       world.enableCollisionDetection && world.enableContactEvents && first.enableContactEvents &&
       second.enableContactEvents && PairFilter.accepts(first, second) &&
@@ -290,6 +322,12 @@ private[sims] final class PairTracker(ordered: Boolean):
   def endSecondShape(k: Int): Shape = { shown.sort(); shown.endSecond(shown.endOrder(k)) }
 
 private[sims] object PairTracker:
+  // A verdict of `judge` on an item: no open pair to settle (touched this step, or an empty slot),
+  // the pair kept open, or ended.
+  private inline val Settled = 0
+  private inline val Kept = 1
+  private inline val Ended = 2
+
   // The values `describe` keeps per begin.
   inline val NormalX = 0
   inline val NormalY = 1

@@ -58,7 +58,7 @@ trait WorldEvents:
     */
   protected def finishEvents(): Unit =
     if !solver.reportsTouching && enableContactEvents then reportContacts()
-    contactTracker.finishStep(this)
+    solver.finishContactEvents(this)
     if sensorCount > 0 then
       if sensorListStale then
         sensorList.clear()

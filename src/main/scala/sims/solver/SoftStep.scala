@@ -160,6 +160,12 @@ final case class SoftStep(
   /** The soft step saves the bodies' state as it loads them (see [[sims.solver.soft.SoftBodies.loadRange]]). */
   override private[sims] def savesBodies: Boolean = true
 
+  /** The soft step judges the open pairs not touched in ranges, on its workers (see
+    * [[sims.solver.soft.SoftPasses.settleEvents]]).
+    */
+  override private[sims] def finishContactEvents(world: World): Unit =
+    world.workspace(classOf[SoftWorkspace], SoftWorkspace()).passes.settleEvents(pool, world)
+
   private def bulletsOf(world: World): ContinuousCollision =
     world.workspace(classOf[ContinuousCollision], ContinuousCollision())
 

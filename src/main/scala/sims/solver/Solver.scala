@@ -38,3 +38,9 @@ trait Solver:
     * anyway; otherwise the world saves them before the step.
     */
   private[sims] def savesBodies: Boolean = false
+
+  /** Ends the contact events of `world`'s step, after `step` and the joints' breaking: the open
+    * pairs that no longer touch end (see [[sims.collision.PairTracker.finishStep]]). A solver
+    * with threads of its own may share the work out.
+    */
+  private[sims] def finishContactEvents(world: World): Unit = world.contactTracker.finishStep(world)

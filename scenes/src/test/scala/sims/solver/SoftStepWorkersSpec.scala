@@ -36,6 +36,27 @@ class SoftStepWorkersSpec extends AnyFunSuite with Matchers:
       fingerprints.distinct shouldBe fingerprints.take(1)
     }
 
+  test("many_pyramids-2x10's contact events, step by step: the same under 1 and 2 workers (the open pairs judged in ranges)") {
+    // Over 2,048 open pairs (boxes on boxes, and side by side), so that two workers judge those
+    // not touched in ranges; pairs end as shapes stop colliding and as boxes fly off.
+    def events(workers: Int): Seq[(Seq[(Int, Int)], Seq[(Int, Int)], Int)] =
+      val world = BenchScenes.find("many_pyramids-2x10").get.build().world
+      world.enableSleep = false
+      world.solver = SoftStep(workers = workers)
+      val boxes = world.bodies.filterNot(_.fixed)
+      for step <- 1 to 60 yield
+        if step == 20 then boxes.take(40).foreach(_.shapes.foreach(_.collidable = false))
+        if step == 30 then boxes.slice(500, 520).foreach(_.linearVelocity = Vector2D(0, 4))
+        world.step()
+        val log = world.contactEvents
+        (log.begins.map(b => (b.shape1.worldIndex, b.shape2.worldIndex)).toSeq,
+          log.ends.map(e => (e.shape1.worldIndex, e.shape2.worldIndex)).toSeq, log.touching.size)
+    val one = events(1)
+    events(2) shouldBe one
+    one.map(_._3).min should be > 2048
+    one.drop(20).map(_._2.size).sum should be > 100 // pairs ended
+  }
+
   test("a world with one worker starts no thread; two workers, one thread for every such world") {
     // Threads by identity: another class loader's copy of the library (another project's tests
     // in this JVM) has pools of its own, with the same names.

@@ -175,6 +175,39 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     try workers.run(3, closeTask)
     finally closing = null
 
+  /** Ends the step's contact events of `world` (see [[sims.collision.PairTracker.finishStep]]),
+    * the open pairs not touched judged in ranges when there are many: every shape's caches made
+    * current first, in ranges of shapes (what the judging reads, and what the next step's
+    * collision stage would make current anyway), so that no range writes a shape.
+    */
+  def settleEvents(workers: Workers, world: sims.dynamics.World): Unit =
+    val tracker = world.contactTracker
+    val count = tracker.beginFinish()
+    val shared = workers.count > 1 && count >= SoftPasses.MinimumShared
+    val needed = if shared then SoftPasses.RangesPerWorker * workers.count else 1
+    if separations.length < needed then separations = Array.fill(needed)(sims.collision.ShapeSeparation())
+    if !shared then tracker.judge(world, 0, count, separations(0))
+    else
+      closing = world
+      try
+        inRanges(workers, world.shapeBuffer.length, refreshTask)
+        inRanges(workers, count, judgeTask)
+      finally closing = null
+    tracker.endFinish()
+
+  // Per range of `settleEvents`: a separation of its own.
+  private var separations = new Array[sims.collision.ShapeSeparation](0)
+
+  private val refreshTask: Workers.Task = index =>
+    val shapes = closing.shapeBuffer
+    var i = from(index)
+    while i < from(index + 1) do
+      shapes(i).refreshCaches()
+      i += 1
+
+  private val judgeTask: Workers.Task = index =>
+    closing.contactTracker.judge(closing, from(index), from(index + 1), separations(index))
+
   /** Every body's placement over a substep h (see `integratePositions` below). */
   def integratePositions(workers: Workers, h: Double): Unit =
     this.h = h
