@@ -268,19 +268,11 @@ private[sims] final class UniformGrid extends Broadphase:
     else
       var n = 0
       if found.length < count then found = new Array[Int](math.max(count, 2 * found.length))
-      var cxLong = x0.toLong
-      while cxLong <= x1 do
-        var cyLong = y0.toLong
-        while cyLong <= y1 do
-          var entry = grid.firstEntry(cxLong.toInt, cyLong.toInt)
-          while entry >= 0 do
-            val j = grid.shapeOf(entry)
-            if math.max(fineX0(j), x0) == cxLong && math.max(fineY0(j), y0) == cyLong then
-              found(n) = j
-              n += 1
-            entry = grid.nextEntry(entry)
-          cyLong += 1
-        cxLong += 1
+      forEachEntry(x0, x1, y0, y1) { (j, cx, cy) =>
+        if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy then
+          found(n) = j
+          n += 1
+      }
       var w = 0
       while w < wide.length do
         found(n) = wide(w)
@@ -373,16 +365,7 @@ private[sims] final class UniformGrid extends Broadphase:
         if placement(i) != Ignored then consider(i, minX, minY, maxX, maxY)
         i += 1
     else
-      var cxLong = x0.toLong
-      while cxLong <= x1 do
-        var cyLong = y0.toLong
-        while cyLong <= y1 do
-          var entry = grid.firstEntry(cxLong.toInt, cyLong.toInt)
-          while entry >= 0 do
-            consider(grid.shapeOf(entry), minX, minY, maxX, maxY)
-            entry = grid.nextEntry(entry)
-          cyLong += 1
-        cxLong += 1
+      forEachEntry(x0, x1, y0, y1)((i, _, _) => consider(i, minX, minY, maxX, maxY))
       var k = 0
       while k < wide.length do { consider(wide(k), minX, minY, maxX, maxY); k += 1 }
       k = 0
@@ -499,6 +482,21 @@ private[sims] final class UniformGrid extends Broadphase:
     * that the grid stays linear).
     */
   private[sims] var pairTests: Long = 0
+
+  /** Calls `visit(shape, cx, cy)` for each entry of the fine cells (cx, cy) from (x0, y0) to
+    * (x1, y1), x, then y (inlined: no closure; Long counters, as in `forEachFineCell`).
+    */
+  private inline def forEachEntry(x0: Int, x1: Int, y0: Int, y1: Int)(inline visit: (Int, Long, Long) => Unit): Unit =
+    var cxLong = x0.toLong
+    while cxLong <= x1 do
+      var cyLong = y0.toLong
+      while cyLong <= y1 do
+        var entry = grid.firstEntry(cxLong.toInt, cyLong.toInt)
+        while entry >= 0 do
+          visit(grid.shapeOf(entry), cxLong, cyLong)
+          entry = grid.nextEntry(entry)
+        cyLong += 1
+      cxLong += 1
 
   /** Calls `visit` for each fine cell of shape i, x, then y (inlined: no closure). Long counters:
     * a cell index at Int.MaxValue must not wrap around.
