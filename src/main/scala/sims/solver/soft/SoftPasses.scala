@@ -53,7 +53,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   private val loadTask: Workers.Task = index =>
     rangeResults(index) = workspace.bodies.loadRange(list, saved, h, from(index), from(index + 1))
 
-  // The world whose step is ending (see `finish` and `close`).
+  // The world whose step is ending (see `finish`, `close` and `settleEvents`).
   private var closing: sims.dynamics.World = null
 
   private val closeTask: Workers.Task = index =>
@@ -189,20 +189,23 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     if !shared then tracker.judge(world, 0, count, separations(0))
     else
       closing = world
+      refreshing = world.shapeBuffer
       try
-        inRanges(workers, world.shapeBuffer.length, refreshTask)
+        inRanges(workers, refreshing.length, refreshTask)
         inRanges(workers, count, judgeTask)
-      finally closing = null
+      finally
+        closing = null
+        refreshing = null
     tracker.endFinish()
 
-  // Per range of `settleEvents`: a separation of its own.
+  // Per range of `settleEvents`: a separation of its own; the shapes whose caches it refreshes.
   private var separations = new Array[sims.collision.ShapeSeparation](0)
+  private var refreshing: Array[sims.dynamics.Shape] = null
 
   private val refreshTask: Workers.Task = index =>
-    val shapes = closing.shapeBuffer
     var i = from(index)
     while i < from(index + 1) do
-      shapes(i).refreshCaches()
+      refreshing(i).refreshCaches()
       i += 1
 
   private val judgeTask: Workers.Task = index =>
