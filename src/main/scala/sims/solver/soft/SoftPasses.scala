@@ -208,8 +208,14 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
       refreshing(i).refreshCaches()
       i += 1
 
+  // Blocks of items dealt out to the ranges in turn, not one stretch each: the pairs to judge are
+  // those kept open untouched last step, at the list's end, and a stretch each would leave them
+  // to one or two ranges while the others found nothing to do.
   private val judgeTask: Workers.Task = index =>
-    closing.contactTracker.judge(closing, from(index), from(index + 1), separations(index))
+    var start = index * SoftPasses.JudgedBlock
+    while start < items do
+      closing.contactTracker.judge(closing, start, math.min(start + SoftPasses.JudgedBlock, items), separations(index))
+      start += ranges * SoftPasses.JudgedBlock
 
   /** Every body's placement over a substep h (see `integratePositions` below). */
   def integratePositions(workers: Workers, h: Double): Unit =
@@ -289,6 +295,8 @@ private[sims] object SoftPasses:
   inline val MinimumShared = 2048
   /** Ranges per worker in a shared stage: a worker that starts late finds work left. */
   inline val RangesPerWorker = 4
+  /** Items of the contact events' settling judged together (see `settleEvents`): a cache line of verdicts. */
+  inline val JudgedBlock = 64
   /** What a range of `finish` found: a body not finite; a body rested long enough to sleep. */
   inline val NotFinite = 1
   inline val ReadyToSleep = 2
