@@ -275,6 +275,16 @@ object Shape:
           "the arguments are too large or too small")
     value
 
+  /** Brings the cached geometry (`refreshCaches`) of `shapes(from until until)` up to date: what a
+    * stage that reads shapes on several threads at once does first, in ranges, so that no read
+    * writes a shape.
+    */
+  private[sims] def refreshCaches(shapes: Array[Shape], from: Int, until: Int): Unit =
+    var i = from
+    while i < until do
+      shapes(i).refreshCaches()
+      i += 1
+
   /** Fails unless a shape's volume, mass and moment of inertia are usable (see `requireDerived`).
     * `arguments` (by name: the shape's description) is built only for the error.
     */

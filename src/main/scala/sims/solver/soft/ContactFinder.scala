@@ -52,10 +52,7 @@ private[sims] final class ContactFinder:
   private var current: Contacts = null
 
   private val refreshTask: Workers.Task = index =>
-    var i = from(index)
-    while i < from(index + 1) do
-      shapes(i).refreshCaches()
-      i += 1
+    sims.dynamics.Shape.refreshCaches(shapes, from(index), from(index + 1))
 
   private val collideTask: Workers.Task = index =>
     val ranged = colliders(index)

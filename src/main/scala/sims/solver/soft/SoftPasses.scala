@@ -203,10 +203,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   private var refreshing: Array[sims.dynamics.Shape] = null
 
   private val refreshTask: Workers.Task = index =>
-    var i = from(index)
-    while i < from(index + 1) do
-      refreshing(i).refreshCaches()
-      i += 1
+    sims.dynamics.Shape.refreshCaches(refreshing, from(index), from(index + 1))
 
   // Blocks of items dealt out to the ranges in turn, not one stretch each: the pairs to judge are
   // those kept open untouched last step, at the list's end, and a stretch each would leave them
