@@ -138,6 +138,7 @@ private[sims] object ContactConstraints:
       val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+      val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
       val two = contacts.pointCount(c) == 2
       var q = k + Header
       var p = 0
@@ -148,24 +149,33 @@ private[sims] object ContactConstraints:
         val dx = dpx + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
         val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
         val s = dx * nx + dy * ny + hot(q + BaseSeparation)
-        val dvx = vBx - wB * rBy - vAx + wA * rAy
-        val dvy = vBy + wB * rBx - vAy - wA * rAx
-        val vn = dvx * nx + dvy * ny
+        // The pass waits on a chain, from one point's impulse to the next point's normal velocity,
+        // more than on arithmetic: what does not depend on the velocities is worked out apart
+        // from them (the arms' moments about the normal, r x n, and the turn a unit impulse
+        // gives each body), so that few operations stand in that chain.
+        val rnA = rAx * ny - rAy * nx; val rnB = rBx * ny - rBy * nx
+        val turnA = iA * rnA; val turnB = iB * rnB
+        // The new accumulated impulse is base - slope vn: base and slope come off the chain too.
         val accumulated = hot(q + NormalImpulse)
         val normalMass = hot(q + NormalMass)
-        val change =
-          if s > 0 then -normalMass * (vn + s * inverseH) // speculative: may close the gap, no more
-          else if useBias then
-            val push = hot(k + BiasRate) * s
-            if push >= -contactSpeed then
-              -normalMass * hot(k + MassScale) * (vn + push) - hot(k + ImpulseScale) * accumulated
-            else
-              // Deeper than the push's cap: see DeepMassScale.
-              -normalMass * DeepMassScale * (vn - contactSpeed) - (1 - DeepMassScale) * accumulated
-          else -normalMass * vn
-        // A branch rather than math.max, whose rules for NaN and signed zeros cost the pass
-        // time: the same value (NaN kept, -0.0 to 0.0).
-        val raw = accumulated + change
+        var slope = normalMass
+        var base = accumulated
+        // Speculative: may close the gap, no more. (Written left to right: the JavaScript
+        // bundle's minifier prints a * (b * c) as a * b * c, which rounds differently.)
+        if s > 0 then base -= s * inverseH * normalMass
+        else if useBias then
+          val push = hot(k + BiasRate) * s
+          if push >= -contactSpeed then
+            slope = normalMass * hot(k + MassScale)
+            base = accumulated - hot(k + ImpulseScale) * accumulated - slope * push
+          else
+            // Deeper than the push's cap: see DeepMassScale.
+            slope = normalMass * DeepMassScale
+            base = accumulated - (1 - DeepMassScale) * accumulated + slope * contactSpeed
+        val vn = ((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB - wA * rnA)
+        // A branch rather than math.max, whose rules for NaN and signed zeros stood in the chain:
+        // the same value (NaN kept, a negative zero to 0).
+        val raw = base - slope * vn
         val total = if raw <= 0 then 0.0 else raw
         val impulse = total - accumulated
         hot(q + NormalImpulse) = total
@@ -180,9 +190,8 @@ private[sims] object ContactConstraints:
           val strongest = hot(q + MaxNormalImpulse)
           if s > 0 && impulse > 0 && strongest == 0 then hot(q + ImpactGap) = if useBias then s else -s
           if impulse > strongest then hot(q + MaxNormalImpulse) = impulse
-        val px = impulse * nx; val py = impulse * ny
-        vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
-        vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
+        vAx -= impulse * mAnx; vAy -= impulse * mAny; wA -= impulse * turnA
+        vBx += impulse * mBnx; vBy += impulse * mBny; wB += impulse * turnB
         q += HotPoint
         p += 1
       // Friction, in the relax pass only (as in Box2D v3; solving it in the solve pass too
@@ -193,21 +202,20 @@ private[sims] object ContactConstraints:
         val friction = hot(k + Friction)
         q = k + Header
         p = 0
+        val mAtx = mA * tx; val mAty = mA * ty; val mBtx = mB * tx; val mBty = mB * ty
         while p == 0 || (p == 1 && two) do
-          val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-          val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-          val dvx = vBx - wB * rBy - vAx + wA * rAy
-          val dvy = vBy + wB * rBx - vAy - wA * rAx
-          val vt = dvx * tx + dvy * ty
+          val rtA = hot(q + AnchorAX) * ty - hot(q + AnchorAY) * tx
+          val rtB = hot(q + AnchorBX) * ty - hot(q + AnchorBY) * tx
+          val turnA = iA * rtA; val turnB = iB * rtB
+          val vt = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB - wA * rtA)
           val accumulated = hot(q + TangentImpulse)
           val bound = friction * hot(q + NormalImpulse)
           val raw = accumulated - hot(q + TangentMass) * vt
           val total = if raw > bound then bound else if raw < -bound then -bound else raw
           val impulse = total - accumulated
           hot(q + TangentImpulse) = total
-          val px = impulse * tx; val py = impulse * ty
-          vAx -= mA * px; vAy -= mA * py; wA -= iA * (rAx * py - rAy * px)
-          vBx += mB * px; vBy += mB * py; wB += iB * (rBx * py - rBy * px)
+          vAx -= impulse * mAtx; vAy -= impulse * mAty; wA -= impulse * turnA
+          vBx += impulse * mBtx; vBy += impulse * mBty; wB += impulse * turnB
           q += HotPoint
           p += 1
       state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
