@@ -115,6 +115,15 @@ private[sims] object ContactConstraints:
   /** One pass over the contacts `order(from until until)` (see [[ContactBlocks]]): normal
     * impulses (with the soft bias when `useBias`, the solve pass; without, the relax pass), then,
     * in the relax pass, friction.
+    *
+    * The pass waits on a chain, from one impulse to the next point's velocity along its row,
+    * more than on its arithmetic, so what does not depend on the velocities is worked out apart
+    * from them: the arms' moments about the normal (r x n) and the tangent, the turn a unit
+    * impulse gives each body, and the new accumulated impulse as base - slope v. A contact's
+    * second point sees its first point's impulse through their coupling, 1/mA + 1/mB +
+    * (rA0 x n)(rA1 x n) / IA + (rB0 x n)(rB1 x n) / IB, the change that impulse makes to its
+    * velocity, and the bodies take both impulses at once: Gauss-Seidel over the points as
+    * before, with a chain half as long.
     */
   def solve(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int, inverseH: Double,
       contactSpeed: Double, useBias: Boolean): Unit =
@@ -131,96 +140,126 @@ private[sims] object ContactConstraints:
       val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
       var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
       var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
-      // B's displacement relative to A's since the step began: the points' current separation.
-      val dpx = state(sB + ShiftX) - state(sA + ShiftX)
-      val dpy = state(sB + ShiftY) - state(sA + ShiftY)
-      val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
-      val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
+      val q0 = k + Header
+      val s0 = gapAt(hot, state, sA, sB, nx, ny, q0)
+      val rnA0 = hot(q0 + AnchorAX) * ny - hot(q0 + AnchorAY) * nx
+      val rnB0 = hot(q0 + AnchorBX) * ny - hot(q0 + AnchorBY) * nx
+      val turnA0 = iA * rnA0; val turnB0 = iB * rnB0
+      val vn0 = ((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB0 - wA * rnA0)
+      val impulse0 = solveNormal(hot, k, q0, s0, vn0, inverseH, contactSpeed, useBias, bouncing)
       val two = contacts.pointCount(c) == 2
-      var q = k + Header
-      var p = 0
-      while p == 0 || (p == 1 && two) do
-        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-        val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-        // current separation from the bodies' motion since the start of the step
-        val dx = dpx + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
-        val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
-        val s = dx * nx + dy * ny + hot(q + BaseSeparation)
-        // The pass waits on a chain, from one point's impulse to the next point's normal velocity,
-        // more than on arithmetic: what does not depend on the velocities is worked out apart
-        // from them (the arms' moments about the normal, r x n, and the turn a unit impulse
-        // gives each body), so that few operations stand in that chain.
-        val rnA = rAx * ny - rAy * nx; val rnB = rBx * ny - rBy * nx
-        val turnA = iA * rnA; val turnB = iB * rnB
-        // The new accumulated impulse is base - slope vn: base and slope come off the chain too.
-        val accumulated = hot(q + NormalImpulse)
-        val normalMass = hot(q + NormalMass)
-        var slope = normalMass
-        var base = accumulated
-        // Speculative: may close the gap, no more. (Written left to right: the JavaScript
-        // bundle's minifier prints a * (b * c) as a * b * c, which rounds differently.)
-        if s > 0 then base -= s * inverseH * normalMass
-        else if useBias then
-          val push = hot(k + BiasRate) * s
-          if push >= -contactSpeed then
-            slope = normalMass * hot(k + MassScale)
-            base = accumulated - hot(k + ImpulseScale) * accumulated - slope * push
-          else
-            // Deeper than the push's cap: see DeepMassScale.
-            slope = normalMass * DeepMassScale
-            base = accumulated - (1 - DeepMassScale) * accumulated + slope * contactSpeed
-        val vn = ((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB - wA * rnA)
-        // A branch rather than math.max, whose rules for NaN and signed zeros stood in the chain:
-        // the same value (NaN kept, a negative zero to 0).
-        val raw = base - slope * vn
-        val total = if raw <= 0 then 0.0 else raw
-        val impulse = total - accumulated
-        hot(q + NormalImpulse) = total
-        // A substep applies its accumulated impulse in all (warm start, solve, relax): at the
-        // end of its relax pass, this is what it applied.
-        if !useBias then hot(q + TotalNormalImpulse) += total
-        // For restitution (a contact that bounces only): the largest push, and the first push's
-        // gap: positive when a solve pass pushed (the gap at the start of the substep it meets
-        // in), negative when a relax pass did (its gap after the substep's positions: it meets
-        // in the next substep), 0 when the bodies touched already.
-        if bouncing then
-          val strongest = hot(q + MaxNormalImpulse)
-          if s > 0 && impulse > 0 && strongest == 0 then hot(q + ImpactGap) = if useBias then s else -s
-          if impulse > strongest then hot(q + MaxNormalImpulse) = impulse
-        vAx -= impulse * mAnx; vAy -= impulse * mAny; wA -= impulse * turnA
-        vBx += impulse * mBnx; vBy += impulse * mBny; wB += impulse * turnB
-        q += HotPoint
-        p += 1
+      if !two then
+        vAx -= impulse0 * mAnx; vAy -= impulse0 * mAny; wA -= impulse0 * turnA0
+        vBx += impulse0 * mBnx; vBy += impulse0 * mBny; wB += impulse0 * turnB0
+      else
+        val q1 = q0 + HotPoint
+        val s1 = gapAt(hot, state, sA, sB, nx, ny, q1)
+        val rnA1 = hot(q1 + AnchorAX) * ny - hot(q1 + AnchorAY) * nx
+        val rnB1 = hot(q1 + AnchorBX) * ny - hot(q1 + AnchorBY) * nx
+        val turnA1 = iA * rnA1; val turnB1 = iB * rnB1
+        val coupling = (mA + mB) + (turnA0 * rnA1 + turnB0 * rnB1)
+        val vn1 = (((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB1 - wA * rnA1)) + coupling * impulse0
+        val impulse1 = solveNormal(hot, k, q1, s1, vn1, inverseH, contactSpeed, useBias, bouncing)
+        val both = impulse0 + impulse1
+        vAx -= both * mAnx; vAy -= both * mAny; wA -= impulse0 * turnA0 + impulse1 * turnA1
+        vBx += both * mBnx; vBy += both * mBny; wB += impulse0 * turnB0 + impulse1 * turnB1
       // Friction, in the relax pass only (as in Box2D v3; solving it in the solve pass too
       // measured no better on the stack, pyramid and ball-pit scenes), bounded by the normal
       // impulses just found.
       if !useBias then
         val tx = -ny; val ty = nx
         val friction = hot(k + Friction)
-        q = k + Header
-        p = 0
         val mAtx = mA * tx; val mAty = mA * ty; val mBtx = mB * tx; val mBty = mB * ty
-        while p == 0 || (p == 1 && two) do
-          val rtA = hot(q + AnchorAX) * ty - hot(q + AnchorAY) * tx
-          val rtB = hot(q + AnchorBX) * ty - hot(q + AnchorBY) * tx
-          val turnA = iA * rtA; val turnB = iB * rtB
-          val vt = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB - wA * rtA)
-          val accumulated = hot(q + TangentImpulse)
-          val bound = friction * hot(q + NormalImpulse)
-          val raw = accumulated - hot(q + TangentMass) * vt
-          val total = if raw > bound then bound else if raw < -bound then -bound else raw
-          val impulse = total - accumulated
-          hot(q + TangentImpulse) = total
-          vAx -= impulse * mAtx; vAy -= impulse * mAty; wA -= impulse * turnA
-          vBx += impulse * mBtx; vBy += impulse * mBty; wB += impulse * turnB
-          q += HotPoint
-          p += 1
+        val rtA0 = hot(q0 + AnchorAX) * ty - hot(q0 + AnchorAY) * tx
+        val rtB0 = hot(q0 + AnchorBX) * ty - hot(q0 + AnchorBY) * tx
+        val turnA0 = iA * rtA0; val turnB0 = iB * rtB0
+        val vt0 = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB0 - wA * rtA0)
+        val impulse0 = solveFriction(hot, q0, friction, vt0)
+        if !two then
+          vAx -= impulse0 * mAtx; vAy -= impulse0 * mAty; wA -= impulse0 * turnA0
+          vBx += impulse0 * mBtx; vBy += impulse0 * mBty; wB += impulse0 * turnB0
+        else
+          val q1 = q0 + HotPoint
+          val rtA1 = hot(q1 + AnchorAX) * ty - hot(q1 + AnchorAY) * tx
+          val rtB1 = hot(q1 + AnchorBX) * ty - hot(q1 + AnchorBY) * tx
+          val turnA1 = iA * rtA1; val turnB1 = iB * rtB1
+          val coupling = (mA + mB) + (turnA0 * rtA1 + turnB0 * rtB1)
+          val vt1 = (((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB1 - wA * rtA1)) + coupling * impulse0
+          val impulse1 = solveFriction(hot, q1, friction, vt1)
+          val both = impulse0 + impulse1
+          vAx -= both * mAtx; vAy -= both * mAty; wA -= impulse0 * turnA0 + impulse1 * turnA1
+          vBx += both * mBtx; vBy += both * mBty; wB += impulse0 * turnB0 + impulse1 * turnB1
       state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
       state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       n += 1
+
+  /** The current separation of the point at q (a contact between the bodies at state offsets
+    * sA and sB, normal (nx, ny)), from the bodies' motion since the step began.
+    */
+  private inline def gapAt(hot: Array[Double], state: Array[Double], sA: Int, sB: Int, nx: Double,
+      ny: Double, q: Int): Double =
+    val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+    val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
+    val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
+    val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
+    val dx = state(sB + ShiftX) - state(sA + ShiftX) + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
+    val dy = state(sB + ShiftY) - state(sA + ShiftY) + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
+    dx * nx + dy * ny + hot(q + BaseSeparation)
+
+  /** The normal impulse of the point at q (of the contact at k), separation s, normal velocity
+    * vn: the soft rule's (see the object's comment), accumulated and clamped at 0, and the
+    * records restitution needs; returns the impulse to apply.
+    */
+  private inline def solveNormal(hot: Array[Double], k: Int, q: Int, s: Double, vn: Double, inverseH: Double,
+      contactSpeed: Double, useBias: Boolean, bouncing: Boolean): Double =
+    val accumulated = hot(q + NormalImpulse)
+    val normalMass = hot(q + NormalMass)
+    var slope = normalMass
+    var base = accumulated
+    // Speculative: may close the gap, no more. (Written left to right: the JavaScript
+    // bundle's minifier prints a * (b * c) as a * b * c, which rounds differently.)
+    if s > 0 then base -= s * inverseH * normalMass
+    else if useBias then
+      val bias = hot(k + BiasRate) * s
+      if bias >= -contactSpeed then
+        slope = normalMass * hot(k + MassScale)
+        base = accumulated - hot(k + ImpulseScale) * accumulated - slope * bias
+      else
+        // Deeper than the push's cap: see DeepMassScale.
+        slope = normalMass * DeepMassScale
+        base = accumulated - (1 - DeepMassScale) * accumulated + slope * contactSpeed
+    // A branch rather than math.max, whose rules for NaN and signed zeros stood in the chain:
+    // the same value (NaN kept, a negative zero to 0).
+    val raw = base - slope * vn
+    val total = if raw <= 0 then 0.0 else raw
+    val impulse = total - accumulated
+    hot(q + NormalImpulse) = total
+    // A substep applies its accumulated impulse in all (warm start, solve, relax): at the
+    // end of its relax pass, this is what it applied.
+    if !useBias then hot(q + TotalNormalImpulse) += total
+    // For restitution (a contact that bounces only): the largest push, and the first push's
+    // gap: positive when a solve pass pushed (the gap at the start of the substep it meets
+    // in), negative when a relax pass did (its gap after the substep's positions: it meets
+    // in the next substep), 0 when the bodies touched already.
+    if bouncing then
+      val strongest = hot(q + MaxNormalImpulse)
+      if s > 0 && impulse > 0 && strongest == 0 then hot(q + ImpactGap) = if useBias then s else -s
+      if impulse > strongest then hot(q + MaxNormalImpulse) = impulse
+    impulse
+
+  /** The friction impulse of the point at q, tangential velocity vt, within the friction
+    * coefficient times its normal impulse (branches, as in `solveNormal`); returns the impulse to apply.
+    */
+  private inline def solveFriction(hot: Array[Double], q: Int, friction: Double, vt: Double): Double =
+    val accumulated = hot(q + TangentImpulse)
+    val bound = friction * hot(q + NormalImpulse)
+    val raw = accumulated - hot(q + TangentMass) * vt
+    val total = if raw > bound then bound else if raw < -bound then -bound else raw
+    hot(q + TangentImpulse) = total
+    total - accumulated
 
   /** Adds to each point's approach what the substep's gravity and forces (`integrateVelocities`)
     * changed of its normal velocity, while the point has not pushed yet this step: its approach
