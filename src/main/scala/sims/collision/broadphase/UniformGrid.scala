@@ -193,15 +193,16 @@ private[sims] final class UniformGrid extends Broadphase:
       val p = placement(i)
       if p == Fine || p == Wide then
         groupSize = 0
-        groupX0 = coarseX0(i)
-        groupY0 = coarseY0(i)
-        groupRows = cell(boxMaxY(i), side) - groupY0 + 1
+        if sorted then
+          groupX0 = coarseX0(i)
+          groupY0 = coarseY0(i)
+          groupRows = cell(boxMaxY(i), side) - groupY0 + 1
         if p == Wide then
           // Too big for the fine grid: tested against every earlier grid shape instead.
           var j = 0
           while j < i do
             val q = placement(j)
-            if (q == Fine || q == Wide) && candidates(j, i) then addToGroup(j, i)
+            if (q == Fine || q == Wide) && candidates(j, i) then partner(j, i, pairs)
             j += 1
         else
           val x0 = fineX0(i); val y0 = fineY0(i)
@@ -212,14 +213,14 @@ private[sims] final class UniformGrid extends Broadphase:
               val j = grid.shapeOf(entry)
               // Each pair once: in the fine cell holding the corner of the bounds' overlap.
               if math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy && candidates(j, i) then
-                addToGroup(j, i)
+                partner(j, i, pairs)
               entry = grid.nextEntry(entry)
             grid.push(slot, i)
           }
           var k = 0
           while k < wide.length && wide(k) < i do
             val j = wide(k)
-            if candidates(j, i) then addToGroup(j, i)
+            if candidates(j, i) then partner(j, i, pairs)
             k += 1
         var g = 0
         while g < groupSize do
@@ -528,26 +529,27 @@ private[sims] final class UniformGrid extends Broadphase:
     if a != General && b != General then (owner(j) ne owner(i)) && !(a == PlainImmovable && b == PlainImmovable)
     else PairFilter.accepts(shapes(j), shapes(i))
 
-  /** Inserts partner j of shape i into the group: in the coarse grid's order (by the rank of
-    * the coarse cell holding the overlap's corner among i's cells, then the later shape first),
-    * or, unsorted, in the order found.
+  /** Partner j of shape i, found: unsorted, straight into `pairs` (the order found); sorted,
+    * into the group, which `findPairs` puts into `pairs` once shape i's cells are done.
+    */
+  private inline def partner(j: Int, i: Int, pairs: PairBuffer): Unit =
+    if sorted then addToGroup(j, i) else pairs.add(j, i)
+
+  /** Inserts partner j of shape i into the group, in the coarse grid's order: by the rank of the
+    * coarse cell holding the overlap's corner among i's cells, then the later shape first.
     */
   private def addToGroup(j: Int, i: Int): Unit =
     if groupSize == groupKeys.length then groupKeys = java.util.Arrays.copyOf(groupKeys, 2 * groupSize)
-    if !sorted then
-      groupKeys(groupSize) = (Int.MaxValue - j).toLong
-      groupSize += 1
-    else
-      val cx = math.max(coarseX0(j), coarseX0(i))
-      val cy = math.max(coarseY0(j), coarseY0(i))
-      val rank = (cx - groupX0) * groupRows + (cy - groupY0)
-      val key = (rank << 32) | (Int.MaxValue - j).toLong
-      var g = groupSize
-      while g > 0 && groupKeys(g - 1) > key do
-        groupKeys(g) = groupKeys(g - 1)
-        g -= 1
-      groupKeys(g) = key
-      groupSize += 1
+    val cx = math.max(coarseX0(j), coarseX0(i))
+    val cy = math.max(coarseY0(j), coarseY0(i))
+    val rank = (cx - groupX0) * groupRows + (cy - groupY0)
+    val key = (rank << 32) | (Int.MaxValue - j).toLong
+    var g = groupSize
+    while g > 0 && groupKeys(g - 1) > key do
+      groupKeys(g) = groupKeys(g - 1)
+      g -= 1
+    groupKeys(g) = key
+    groupSize += 1
 
   private def ensureCapacity(n: Int): Unit =
     if boxMinX.length < n then
