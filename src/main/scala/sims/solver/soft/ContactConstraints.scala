@@ -144,7 +144,7 @@ private[sims] object ContactConstraints:
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
       val q0 = k + Header
-      val s0 = gapAt(hot, state, sA, sB, nx, ny, q0)
+      val s0 = separationAt(hot, state, sA, sB, nx, ny, q0)
       val rnA0 = hot(q0 + AnchorAX) * ny - hot(q0 + AnchorAY) * nx
       val rnB0 = hot(q0 + AnchorBX) * ny - hot(q0 + AnchorBY) * nx
       val turnA0 = iA * rnA0; val turnB0 = iB * rnB0
@@ -156,7 +156,7 @@ private[sims] object ContactConstraints:
         vBx += impulse0 * mBnx; vBy += impulse0 * mBny; wB += impulse0 * turnB0
       else
         val q1 = q0 + HotPoint
-        val s1 = gapAt(hot, state, sA, sB, nx, ny, q1)
+        val s1 = separationAt(hot, state, sA, sB, nx, ny, q1)
         val rnA1 = hot(q1 + AnchorAX) * ny - hot(q1 + AnchorAY) * nx
         val rnB1 = hot(q1 + AnchorBX) * ny - hot(q1 + AnchorBY) * nx
         val turnA1 = iA * rnA1; val turnB1 = iB * rnB1
@@ -199,7 +199,7 @@ private[sims] object ContactConstraints:
   /** The current separation of the point at q (a contact between the bodies at state offsets
     * sA and sB, normal (nx, ny)), from the bodies' motion since the step began.
     */
-  private inline def gapAt(hot: Array[Double], state: Array[Double], sA: Int, sB: Int, nx: Double,
+  private inline def separationAt(hot: Array[Double], state: Array[Double], sA: Int, sB: Int, nx: Double,
       ny: Double, q: Int): Double =
     val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
     val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
@@ -282,18 +282,9 @@ private[sims] object ContactConstraints:
 
   /** The current separation of contact c's point at q, from the bodies' motion since the step began. */
   private def separationNow(contacts: Contacts, c: Int, q: Int, bodies: SoftBodies): Double =
-    val hot = contacts.hot
-    val state = bodies.state
     val k = contacts.offset(c)
-    val sA = contacts.bodyA(c) * SoftBodies.Stride
-    val sB = contacts.bodyB(c) * SoftBodies.Stride
-    val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-    val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-    val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
-    val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
-    val dx = state(sB + ShiftX) - state(sA + ShiftX) + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
-    val dy = state(sB + ShiftY) - state(sA + ShiftY) + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
-    dx * hot(k + NormalX) + dy * hot(k + NormalY) + hot(q + BaseSeparation)
+    separationAt(contacts.hot, bodies.state, contacts.bodyA(c) * SoftBodies.Stride,
+      contacts.bodyB(c) * SoftBodies.Stride, contacts.hot(k + NormalX), contacts.hot(k + NormalY), q)
 
   /** The change of the normal velocity of contact c's point at q over a substep h by gravity
     * and the forces alone.
