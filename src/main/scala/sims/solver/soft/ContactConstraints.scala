@@ -140,11 +140,17 @@ private[sims] object ContactConstraints:
       val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
       var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
       var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
+      // B's displacement relative to A's since the step began, and their turns: the points'
+      // current separations.
+      val dpx = state(sB + ShiftX) - state(sA + ShiftX)
+      val dpy = state(sB + ShiftY) - state(sA + ShiftY)
+      val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
+      val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
       val q0 = k + Header
-      val s0 = separationAt(hot, state, sA, sB, nx, ny, q0)
+      val s0 = separationAt(hot, q0, nx, ny, dpx, dpy, cosA, sinA, cosB, sinB)
       val rnA0 = hot(q0 + AnchorAX) * ny - hot(q0 + AnchorAY) * nx
       val rnB0 = hot(q0 + AnchorBX) * ny - hot(q0 + AnchorBY) * nx
       val turnA0 = iA * rnA0; val turnB0 = iB * rnB0
@@ -156,7 +162,7 @@ private[sims] object ContactConstraints:
         vBx += impulse0 * mBnx; vBy += impulse0 * mBny; wB += impulse0 * turnB0
       else
         val q1 = q0 + HotPoint
-        val s1 = separationAt(hot, state, sA, sB, nx, ny, q1)
+        val s1 = separationAt(hot, q1, nx, ny, dpx, dpy, cosA, sinA, cosB, sinB)
         val rnA1 = hot(q1 + AnchorAX) * ny - hot(q1 + AnchorAY) * nx
         val rnB1 = hot(q1 + AnchorBX) * ny - hot(q1 + AnchorBY) * nx
         val turnA1 = iA * rnA1; val turnB1 = iB * rnB1
@@ -196,17 +202,15 @@ private[sims] object ContactConstraints:
       state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       n += 1
 
-  /** The current separation of the point at q (a contact between the bodies at state offsets
-    * sA and sB, normal (nx, ny)), from the bodies' motion since the step began.
+  /** The current separation of the point at q, normal (nx, ny), from its bodies' motion since the
+    * step began: B's displacement relative to A's (dpx, dpy) and each body's turn (cosine, sine).
     */
-  private inline def separationAt(hot: Array[Double], state: Array[Double], sA: Int, sB: Int, nx: Double,
-      ny: Double, q: Int): Double =
+  private inline def separationAt(hot: Array[Double], q: Int, nx: Double, ny: Double, dpx: Double, dpy: Double,
+      cosA: Double, sinA: Double, cosB: Double, sinB: Double): Double =
     val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
     val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-    val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
-    val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
-    val dx = state(sB + ShiftX) - state(sA + ShiftX) + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
-    val dy = state(sB + ShiftY) - state(sA + ShiftY) + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
+    val dx = dpx + (cosB * rBx - sinB * rBy) - (cosA * rAx - sinA * rAy)
+    val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
     dx * nx + dy * ny + hot(q + BaseSeparation)
 
   /** The normal impulse of the point at q (of the contact at k), separation s, normal velocity
@@ -282,9 +286,14 @@ private[sims] object ContactConstraints:
 
   /** The current separation of contact c's point at q, from the bodies' motion since the step began. */
   private def separationNow(contacts: Contacts, c: Int, q: Int, bodies: SoftBodies): Double =
+    val hot = contacts.hot
+    val state = bodies.state
     val k = contacts.offset(c)
-    separationAt(contacts.hot, bodies.state, contacts.bodyA(c) * SoftBodies.Stride,
-      contacts.bodyB(c) * SoftBodies.Stride, contacts.hot(k + NormalX), contacts.hot(k + NormalY), q)
+    val sA = contacts.bodyA(c) * SoftBodies.Stride
+    val sB = contacts.bodyB(c) * SoftBodies.Stride
+    separationAt(hot, q, hot(k + NormalX), hot(k + NormalY), state(sB + ShiftX) - state(sA + ShiftX),
+      state(sB + ShiftY) - state(sA + ShiftY), state(sA + TurnCos), state(sA + TurnSin), state(sB + TurnCos),
+      state(sB + TurnSin))
 
   /** The change of the normal velocity of contact c's point at q over a substep h by gravity
     * and the forces alone.
