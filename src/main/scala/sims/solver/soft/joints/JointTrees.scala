@@ -52,8 +52,9 @@ private[sims] final class JointTrees:
   // the substitution (k x 3, at 6 node); the right side z, w = D^-1 z and the solution x, at 3 node.
   private var d, factor = new Array[Double](0)
   private var z, w, x = new Array[Double](0)
-  // Per body node: its body's mass and moment of inertia for this step, at 2 node and 2 node + 1.
-  private var bodyMass = new Array[Double](0)
+  // Per node, for this step, at 4 node: a body node's mass and moment of inertia; a joint
+  // node's bodies' inverse masses and moments, body 1's then body 2's.
+  private var masses = new Array[Double](0)
   // Folding (see `fold`): whether a body node is folded into its joints; per joint node, the node
   // it is eliminated into and which of its joint's bodies are folded (1: body 1, 2: body 2, 3:
   // both); per joint node eliminated into a joint, the block between them (k x k', at 4 node).
@@ -64,6 +65,10 @@ private[sims] final class JointTrees:
   // acts on it this step (see `markTouched`).
   private var treeCount = 0
   private var treeStart = new Array[Int](1)
+  // The nodes the passes visit (all but the folded bodies, which have nothing of their own to
+  // solve), in node order: tree k's are live(liveStart(k) until liveStart(k + 1)).
+  private var live = new Array[Int](0)
+  private var liveStart = new Array[Int](1)
   private var treeTouched = new Array[Boolean](0)
   // The joints (and their bodies' indices, whether each moves, rows) the trees were laid out
   // for: while they stay the same, so do the trees (see `sameLayout`).
@@ -249,8 +254,9 @@ private[sims] final class JointTrees:
       nodeJacobian = new Array[Int](room)
       d = new Array[Double](6 * room); factor = new Array[Double](6 * room)
       z = new Array[Double](3 * room); w = new Array[Double](3 * room); x = new Array[Double](3 * room)
-      bodyMass = new Array[Double](2 * room)
+      masses = new Array[Double](4 * room)
       nodeFolded = new Array[Boolean](room)
+      live = new Array[Int](room)
       nodeAbove = new Array[Int](room); nodeFolds = new Array[Int](room); childCount = new Array[Int](room)
       link = new Array[Double](4 * room)
     java.util.Arrays.fill(bodyNode, 0, n, -1)
@@ -279,6 +285,7 @@ private[sims] final class JointTrees:
     treeStart(treeCount) = nodeCount
     if treeTouched.length < treeCount then treeTouched = new Array[Boolean](2 * treeCount)
     fold()
+    listLive()
 
   /** Folds every body that is not a tree's root and holds at most one joint below it (a chain's
     * link, a leaf) into its joints: its mass matrix is diagonal, so it is eliminated first, at no
@@ -308,6 +315,22 @@ private[sims] final class JointTrees:
       node += 1
 
   private def folded(body: Int): Boolean = body >= 0 && nodeFolded(bodyNode(body))
+
+  /** Lists each tree's nodes that are not folded, in node order (see `live`). */
+  private def listLive(): Unit =
+    if liveStart.length < treeCount + 1 then liveStart = new Array[Int](2 * (treeCount + 1))
+    var count = 0
+    var tree = 0
+    while tree < treeCount do
+      liveStart(tree) = count
+      var node = treeStart(tree)
+      while node < treeStart(tree + 1) do
+        if !nodeFolded(node) then
+          live(count) = node
+          count += 1
+        node += 1
+      tree += 1
+    liveStart(treeCount) = count
 
   /** The root of the tree holding `element` (a body b < n or a joint n + t): its joint to the
     * ground if it has one, else its centre, the middle of a longest path, found by two sweeps
@@ -455,16 +478,21 @@ private[sims] final class JointTrees:
         axialCount += 1
       t += 1
 
-  /** Each body node's mass and moment of inertia for this step's passes (a folded body's are
-    * not used: its inverses are).
+  /** Each node's masses for this step's passes (see `masses`; a folded body's are not used:
+    * its joints' inverses are).
     */
   private def takeMasses(bodies: SoftBodies): Unit =
     var node = 0
     while node < nodeCount do
-      if !nodeIsJoint(node) && !nodeFolded(node) then
+      val m = 4 * node
+      if nodeIsJoint(node) then
+        val joint = nodeRef(node)
+        masses(m) = bodies.invMass(index1(joint)); masses(m + 1) = bodies.invI(index1(joint))
+        masses(m + 2) = bodies.invMass(index2(joint)); masses(m + 3) = bodies.invI(index2(joint))
+      else if !nodeFolded(node) then
         val b = nodeRef(node)
-        bodyMass(2 * node) = 1 / bodies.invMass(b)
-        bodyMass(2 * node + 1) = 1 / bodies.invI(b)
+        masses(m) = 1 / bodies.invMass(b)
+        masses(m + 1) = 1 / bodies.invI(b)
       node += 1
 
   private def mark(index: Int): Unit = if index >= 0 && index < bodyMark.length then bodyMark(index) = markStamp
@@ -504,29 +532,32 @@ private[sims] final class JointTrees:
       var tree = 0
       while tree < treeCount do
         if always || treeTouched(tree) then
-          val from = treeStart(tree)
-          val until = treeStart(tree + 1)
-          var node = from
-          while node < until do
+          val from = liveStart(tree)
+          val until = liveStart(tree + 1)
+          var n = from
+          while n < until do
+            val node = live(n)
             if nodeIsJoint(node) then
               val joint = nodeRef(node)
               rows.target(jacobians, 12 * joint, positionError, 2 * joint)
               direct(joint).rowsAt(context, rows)
-            node += 1
+            n += 1
+          // The joints' rows at the current positions first (a loop of its own: fused into
+          // `setUp` it measured 8% slower on a chain).
           // A tree the warm start left alone starts the substep's solve pass from 0.
           val fresh = useBias && !treeTouched(tree)
           setUp(context, state, useBias, fresh, from, until)
           eliminate(from, until)
-          substitute(context.bodies, state, fresh, from, until)
+          substitute(state, fresh, from, until)
         tree += 1
 
-  /** Each node's block of H and right side: a body's mass matrix and 0; a joint's -G (its
-    * compliance, in the solve pass) less its folded bodies' J M^-1 J^T, and -(Cdot + bias + G
-    * lambdaAcc); the block between a joint and the joint above it (see `fold`).
+  /** For the nodes `live(from until until)`, each node's block of H and right side: a body's
+    * mass matrix and 0; a joint's -G (its compliance, in the solve pass) less its folded bodies'
+    * J M^-1 J^T, and -(Cdot + bias + G lambdaAcc); the block between a joint and the joint above
+    * it (see `fold`).
     */
   private def setUp(context: SoftContext, state: Array[Double], useBias: Boolean, fresh: Boolean, from: Int,
       until: Int): Unit =
-    val bodies = context.bodies
     // A compliance G = Compliance K in the solve pass, K the joint's own effective mass
     // matrix (its two bodies alone): J dv + Cdot + C / h + G (acc + dLambda) = 0, so D = -G
     // and G acc on the right; the relax pass is exact (G = 0, no bias). Exact with bias, a
@@ -537,8 +568,9 @@ private[sims] final class JointTrees:
     // stays within about 1 / Compliance times what its own bodies alone would give.
     val compliance = if useBias then JointTrees.Compliance else 0.0
     val inverseH = context.inverseH
-    var node = from
-    while node < until do
+    var n = from
+    while n < until do
+      val node = live(n)
       val o = 6 * node
       val v = 3 * node
       if nodeIsJoint(node) then
@@ -547,8 +579,8 @@ private[sims] final class JointTrees:
         val j2 = j1 + 6
         val s1 = index1(joint) * SoftBodies.Stride
         val s2 = index2(joint) * SoftBodies.Stride
-        val m1 = bodies.invMass(index1(joint)); val i1 = bodies.invI(index1(joint))
-        val m2 = bodies.invMass(index2(joint)); val i2 = bodies.invI(index2(joint))
+        val m1 = masses(4 * node); val i1 = masses(4 * node + 1)
+        val m2 = masses(4 * node + 2); val i2 = masses(4 * node + 3)
         // Each body's share of K that D takes: the compliance's, and all of a folded body's.
         val folds = nodeFolds(node)
         val share1 = if (folds & 1) != 0 then 1 + compliance else compliance
@@ -573,22 +605,23 @@ private[sims] final class JointTrees:
           z(v) = -(cdot0 + bias0 + g00 * acc0 + g01 * acc1)
           z(v + 1) = -(cdot1 + bias1 + g01 * acc0 + g11 * acc1)
         val above = nodeAbove(node)
-        if above >= 0 && nodeIsJoint(above) then setLink(bodies, node, above)
-      else if !nodeFolded(node) then
-        val mass = bodyMass(2 * node)
+        if above >= 0 && nodeIsJoint(above) then
+          // The folded body between them is one of this joint's two.
+          if nodeJacobian(node) == j1 then setLink(node, above, m1, i1) else setLink(node, above, m2, i2)
+      else
+        val mass = masses(4 * node)
         d(o) = mass; d(o + 1) = 0; d(o + 2) = 0
         d(o + 3) = mass; d(o + 4) = 0
-        d(o + 5) = bodyMass(2 * node + 1)
+        d(o + 5) = masses(4 * node + 1)
         z(v) = 0; z(v + 1) = 0; z(v + 2) = 0
-      node += 1
+      n += 1
 
   /** The block B between joint node `node` and the joint node `above` it, through the folded
-    * body between them: -J M^-1 J_above^T, B(r, q) at 4 node + 2 r + q (0 where either joint
-    * has one row).
+    * body between them (inverse mass m, inverse moment i): -J M^-1 J_above^T, B(r, q) at
+    * 4 node + 2 r + q (0 where either joint has one row).
     */
-  private def setLink(bodies: SoftBodies, node: Int, above: Int): Unit =
+  private inline def setLink(node: Int, above: Int, m: Double, i: Double): Unit =
     val body = nodeParent(node)
-    val m = bodies.invMass(nodeRef(body)); val i = bodies.invI(nodeRef(body))
     val below = nodeJacobian(node) // this joint's rows for the body
     val over = nodeJacobian(body) // the joint above's rows for it
     val two = nodeSize(above) == 2
@@ -602,19 +635,21 @@ private[sims] final class JointTrees:
       link(l + 2) = 0.0
       link(l + 3) = 0.0
 
-  /** Leaves first: each node's D is final once its children are eliminated; it is inverted and
-    * eliminated into the node above it: D_p -= H_pc D_c^-1 H_cp and z_p -= H_pc D_c^-1 z_c, where
-    * H_pc is J^T (3 x k) for a joint below a body, J (k x 3) for a body below a joint, and B^T for
-    * a joint below a joint (see `fold`). Kept for the substitution: w_c = D_c^-1 z_c, and the
-    * factor D_c^-1 J or D_c^-1 B (a joint) or J D_c^-1 (a body). Blocks are symmetric, stored as
-    * their upper triangle: (0, 0) (0, 1) (0, 2) (1, 1) (1, 2) (2, 2) at offsets 0 to 5 (a 2 x 2
-    * block uses 0, 1 and 3). Every pivot is regular: a body's D is its mass matrix plus what its
-    * subtree adds (positive definite), a joint's -J D^-1 J^T of the bodies below it and its
-    * folded bodies' -J M^-1 J^T, which a joint to the ground only lacks as its tree's root.
+  /** The nodes `live(from until until)`, leaves first: each node's D is final once its children
+    * are eliminated; it is inverted and eliminated into the node above it:
+    * D_p -= H_pc D_c^-1 H_cp and z_p -= H_pc D_c^-1 z_c, where H_pc is J^T (3 x k) for a joint
+    * below a body, J (k x 3) for a body below a joint, and B^T for a joint below a joint (see
+    * `fold`). Kept for the substitution: w_c = D_c^-1 z_c, and the factor D_c^-1 J or D_c^-1 B
+    * (a joint) or J D_c^-1 (a body). Blocks are symmetric, stored as their upper triangle:
+    * (0, 0) (0, 1) (0, 2) (1, 1) (1, 2) (2, 2) at offsets 0 to 5 (a 2 x 2 block uses 0, 1 and 3).
+    * Every pivot is regular: a body's D is its mass matrix plus what its subtree adds (positive
+    * definite), a joint's -J D^-1 J^T of the bodies below it and its folded bodies' -J M^-1 J^T,
+    * which a joint to the ground only lacks as its tree's root.
     */
   private def eliminate(from: Int, until: Int): Unit =
-    var node = until - 1
-    while node >= from do
+    var n = until - 1
+    while n >= from do
+      val node = live(n)
       val o = 6 * node
       val v = 3 * node
       if nodeIsJoint(node) then
@@ -635,7 +670,7 @@ private[sims] final class JointTrees:
         if above >= 0 then
           if nodeIsJoint(above) then eliminateIntoJoint(node, above, i00, i01, i11, y0, y1)
           else eliminateIntoBody(node, above, i00, i01, i11, y0, y1)
-      else if !nodeFolded(node) then
+      else
         // The symmetric 3 x 3 inverse by cofactors (a singular block gives 0).
         val a = d(o); val b = d(o + 1); val c = d(o + 2); val e = d(o + 3); val f = d(o + 4); val i = d(o + 5)
         val c00 = e * i - f * f; val c01 = c * f - b * i; val c02 = b * f - c * e
@@ -669,13 +704,13 @@ private[sims] final class JointTrees:
             d(p + 1) -= f0 * b0 + f1 * b1 + f2 * b2
             d(p + 3) -= h0 * b0 + h1 * b1 + h2 * b2
             z(pv + 1) -= h0 * z0 + h1 * z1 + h2 * z2
-      node -= 1
+      n -= 1
 
   /** Joint node `node` (D^-1 = (i00, i01; i01, i11), y = D^-1 z) into the joint node `above`,
     * through the block B (see `setLink`): G = D^-1 B kept, D_above -= B^T G, z_above -= B^T y.
     * (Where either has one row, B's other entries are 0: so are G's and the updates'.)
     */
-  private def eliminateIntoJoint(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
+  private inline def eliminateIntoJoint(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
       y1: Double): Unit =
     val l = 4 * node
     val o = 6 * node
@@ -702,7 +737,7 @@ private[sims] final class JointTrees:
   /** Joint node `node` (D^-1 = (i00, i01; i01, i11), y = D^-1 z) into the body node `above`: G =
     * D^-1 J kept, D_above -= J^T G, z_above -= J^T y.
     */
-  private def eliminateIntoBody(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
+  private inline def eliminateIntoBody(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
       y1: Double): Unit =
     val o = 6 * node
     val p = 6 * above
@@ -726,13 +761,14 @@ private[sims] final class JointTrees:
       d(p + 3) -= a1 * g1 + b1 * h1; d(p + 4) -= a1 * g2 + b1 * h2; d(p + 5) -= a2 * g2 + b2 * h2
       z(pv) -= a0 * y0 + b0 * y1; z(pv + 1) -= a1 * y0 + b1 * y1; z(pv + 2) -= a2 * y0 + b2 * y1
 
-  /** Roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the factor) x_p; then the velocities
-    * change by their bodies' x (a folded body's by -M^-1 J^T x of its joints), each joint's
-    * accumulated impulse by -x.
+  /** The nodes `live(from until until)`, roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the
+    * factor) x_p; then the velocities change by their bodies' x (a folded body's by -M^-1 J^T x
+    * of its joints), each joint's accumulated impulse by -x.
     */
-  private def substitute(bodies: SoftBodies, state: Array[Double], fresh: Boolean, from: Int, until: Int): Unit =
-    var node = from
-    while node < until do
+  private def substitute(state: Array[Double], fresh: Boolean, from: Int, until: Int): Unit =
+    var n = from
+    while n < until do
+      val node = live(n)
       val o = 6 * node
       val v = 3 * node
       if nodeIsJoint(node) then
@@ -765,9 +801,10 @@ private[sims] final class JointTrees:
           accumulated(0) -= x0
           if two then accumulated(1) -= x1
         val folds = nodeFolds(node)
-        if (folds & 1) != 0 then push(bodies, state, index1(joint), 12 * joint, two, x0, x1)
-        if (folds & 2) != 0 then push(bodies, state, index2(joint), 12 * joint + 6, two, x0, x1)
-      else if !nodeFolded(node) then
+        val m = 4 * node
+        if (folds & 1) != 0 then push(state, index1(joint), masses(m), masses(m + 1), 12 * joint, two, x0, x1)
+        if (folds & 2) != 0 then push(state, index2(joint), masses(m + 2), masses(m + 3), 12 * joint + 6, two, x0, x1)
+      else
         val parent = nodeParent(node)
         if parent < 0 then
           x(v) = w(v); x(v + 1) = w(v + 1); x(v + 2) = w(v + 2)
@@ -786,15 +823,13 @@ private[sims] final class JointTrees:
             x(v + 2) = w(v + 2) - factor(o + 2) * q0 - factor(o + 5) * q1
         val k = nodeRef(node) * SoftBodies.Stride
         state(k + VelocityX) += x(v); state(k + VelocityY) += x(v + 1); state(k + AngularVelocity) += x(v + 2)
-      node += 1
+      n += 1
 
-  /** A folded body's share of its joint's solution: dv = -M^-1 J^T x, J the joint's rows for the
-    * body at `rows` (the second row only when `two`).
+  /** A folded body's share of its joint's solution: dv = -M^-1 J^T x, M^-1 its inverse mass m
+    * and moment i, J the joint's rows for the body at `rows` (the second row only when `two`).
     */
-  private def push(bodies: SoftBodies, state: Array[Double], body: Int, rows: Int, two: Boolean, x0: Double,
+  private def push(state: Array[Double], body: Int, m: Double, i: Double, rows: Int, two: Boolean, x0: Double,
       x1: Double): Unit =
-    val m = bodies.invMass(body)
-    val i = bodies.invI(body)
     var fx = jacobians(rows) * x0; var fy = jacobians(rows + 1) * x0; var torque = jacobians(rows + 2) * x0
     if two then
       fx += jacobians(rows + 3) * x1; fy += jacobians(rows + 4) * x1; torque += jacobians(rows + 5) * x1
