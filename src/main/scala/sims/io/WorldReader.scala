@@ -293,11 +293,9 @@ private[io] object WorldReader:
       table.ids(2 * c) = in.readInt()
       table.ids(2 * c + 1) = in.readInt()
       table.side(c) = in.readInt()
-      val hot = table.offset(c)
-      for k <- 0 until ContactTable.Header do table.hot(hot + k) = in.readDouble()
       // Before version 5 a point's block had no ImpactGap (its last slot): it stays 0.
-      val saved = if version >= 5 then ContactTable.HotPoint else ContactTable.HotPointBeforeFormat5
-      for p <- 0 until table.pointCount(c); k <- 0 until saved do
-        table.hot(hot + ContactTable.Header + p * ContactTable.HotPoint + k) = in.readDouble()
+      val perPoint = ContactTable.savedPoint(version)
+      val block = Array.fill(ContactTable.savedHeader + table.pointCount(c) * perPoint)(in.readDouble())
+      ContactTable.load(table, c, block, perPoint)
       for k <- 0 until ContactTable.ColdStride do table.cold(c * ContactTable.ColdStride + k) = in.readDouble()
     world.workspace(classOf[SoftWorkspace], SoftWorkspace()).table.restoreCommitted(table)

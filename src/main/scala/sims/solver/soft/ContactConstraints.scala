@@ -43,6 +43,7 @@ private[sims] object ContactConstraints:
     val cold = contacts.cold
     val state = bodies.state
     val masses = contacts.masses
+    val records = contacts.records
     var c = from
     while c < until do
       val a = contacts.bodyA(c)
@@ -67,12 +68,13 @@ private[sims] object ContactConstraints:
         val rtA = rAx * ty - rAy * tx; val rtB = rBx * ty - rBy * tx
         val kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB
         hot(q + TangentMass) = if kTangent > 0 then 1 / kTangent else 0
-        hot(q + MaxNormalImpulse) = 0
+        val r = contacts.recordPoint(c, p)
+        records(r + MaxNormalImpulse) = 0
         hot(q + TotalNormalImpulse) = 0
-        hot(q + ImpactGap) = 0
+        records(r + ImpactGap) = 0
         val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) + state(sA + AngularVelocity) * rAy
         val dvy = state(sB + VelocityY) + state(sB + AngularVelocity) * rBx - state(sA + VelocityY) - state(sA + AngularVelocity) * rAx
-        hot(q + RelativeVelocity) = dvx * nx + dvy * ny
+        records(r + RelativeVelocity) = dvx * nx + dvy * ny
         p += 1
       stiffness.set(contacts, c, mA == 0 || mB == 0)
       c += 1
@@ -131,6 +133,7 @@ private[sims] object ContactConstraints:
     val masses = contacts.masses
     val state = bodies.state
     val bouncing = contacts.bouncing
+    val records = contacts.records
     var n = from
     while n < until do
       val c = order(n)
@@ -140,6 +143,7 @@ private[sims] object ContactConstraints:
       val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
       var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
       var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
+      val r0 = contacts.recordPoint(c, 0)
       // B's displacement relative to A's since the step began, and their turns: the points'
       // current separations.
       val dpx = state(sB + ShiftX) - state(sA + ShiftX)
@@ -155,7 +159,7 @@ private[sims] object ContactConstraints:
       val rnB0 = hot(q0 + AnchorBX) * ny - hot(q0 + AnchorBY) * nx
       val turnA0 = iA * rnA0; val turnB0 = iB * rnB0
       val vn0 = ((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB0 - wA * rnA0)
-      val impulse0 = solveNormal(hot, k, q0, s0, vn0, inverseH, contactSpeed, useBias, bouncing)
+      val impulse0 = solveNormal(hot, k, q0, s0, vn0, inverseH, contactSpeed, useBias, bouncing, records, r0)
       val two = contacts.pointCount(c) == 2
       if !two then
         vAx -= impulse0 * mAnx; vAy -= impulse0 * mAny; wA -= impulse0 * turnA0
@@ -168,7 +172,8 @@ private[sims] object ContactConstraints:
         val turnA1 = iA * rnA1; val turnB1 = iB * rnB1
         val coupling = (mA + mB) + (turnA0 * rnA1 + turnB0 * rnB1)
         val vn1 = (((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB1 - wA * rnA1)) + coupling * impulse0
-        val impulse1 = solveNormal(hot, k, q1, s1, vn1, inverseH, contactSpeed, useBias, bouncing)
+        val impulse1 = solveNormal(hot, k, q1, s1, vn1, inverseH, contactSpeed, useBias, bouncing, records,
+          r0 + RecordPoint)
         val both = impulse0 + impulse1
         vAx -= both * mAnx; vAy -= both * mAny; wA -= impulse0 * turnA0 + impulse1 * turnA1
         vBx += both * mBnx; vBy += both * mBny; wB += impulse0 * turnB0 + impulse1 * turnB1
@@ -213,12 +218,12 @@ private[sims] object ContactConstraints:
     val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
     dx * nx + dy * ny + hot(q + BaseSeparation)
 
-  /** The normal impulse of the point at q (of the contact at k), separation s, normal velocity
-    * vn: the soft rule's (see the object's comment), accumulated and clamped at 0, and the
-    * records restitution needs; returns the impulse to apply.
+  /** The normal impulse of the point at q (of the contact at k, its record at r), separation s,
+    * normal velocity vn: the soft rule's (see the object's comment), accumulated and clamped at
+    * 0, and the records restitution needs; returns the impulse to apply.
     */
   private inline def solveNormal(hot: Array[Double], k: Int, q: Int, s: Double, vn: Double, inverseH: Double,
-      contactSpeed: Double, useBias: Boolean, bouncing: Boolean): Double =
+      contactSpeed: Double, useBias: Boolean, bouncing: Boolean, records: Array[Double], r: Int): Double =
     val accumulated = hot(q + NormalImpulse)
     val normalMass = hot(q + NormalMass)
     var slope = normalMass
@@ -249,9 +254,9 @@ private[sims] object ContactConstraints:
     // in), negative when a relax pass did (its gap after the substep's positions: it meets
     // in the next substep), 0 when the bodies touched already.
     if bouncing then
-      val strongest = hot(q + MaxNormalImpulse)
-      if s > 0 && impulse > 0 && strongest == 0 then hot(q + ImpactGap) = if useBias then s else -s
-      if impulse > strongest then hot(q + MaxNormalImpulse) = impulse
+      val strongest = records(r + MaxNormalImpulse)
+      if s > 0 && impulse > 0 && strongest == 0 then records(r + ImpactGap) = if useBias then s else -s
+      if impulse > strongest then records(r + MaxNormalImpulse) = impulse
     impulse
 
   /** The friction impulse of the point at q, tangential velocity vt, within the friction
@@ -272,15 +277,16 @@ private[sims] object ContactConstraints:
     * of what other contacts did to the bodies within the step (see `restitution`).
     */
   def addFreeMotion(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, h: Double): Unit =
-    val hot = contacts.hot
+    val records = contacts.records
     var c = 0
     while contacts.bouncing && c < contacts.active do
-      val k = contacts.offset(c)
-      if hot(k + Restitution) != 0 then
+      if records(c * RecordStride + Restitution) != 0 then
         var p = 0
         while p < contacts.pointCount(c) do
-          val q = k + Header + p * HotPoint
-          if hot(q + MaxNormalImpulse) == 0 then hot(q + RelativeVelocity) += freeAlongNormal(contacts, c, q, bodies, gx, gy, h)
+          val q = contacts.hotPoint(c, p)
+          val r = contacts.recordPoint(c, p)
+          if records(r + MaxNormalImpulse) == 0 then
+            records(r + RelativeVelocity) += freeAlongNormal(contacts, c, q, bodies, gx, gy, h)
           p += 1
       c += 1
 
@@ -336,6 +342,7 @@ private[sims] object ContactConstraints:
   def restitution(contacts: Contacts, bodies: SoftBodies, threshold: Double, iterations: Int, tolerance: Double,
       gx: Double, gy: Double, h: Double): Unit =
     val hot = contacts.hot
+    val records = contacts.records
     val state = bodies.state
     var pass = 0
     var largest = Double.PositiveInfinity
@@ -344,7 +351,7 @@ private[sims] object ContactConstraints:
       var c = 0
       while c < contacts.active do
         val k = contacts.offset(c)
-        val e = hot(k + Restitution)
+        val e = records(c * RecordStride + Restitution)
         if e != 0 then
           val a = contacts.bodyA(c)
           val b = contacts.bodyB(c)
@@ -353,7 +360,8 @@ private[sims] object ContactConstraints:
           var p = 0
           while p < contacts.pointCount(c) do
             val q = k + Header + p * HotPoint
-            if hot(q + RelativeVelocity) < -threshold && hot(q + MaxNormalImpulse) > 0 then
+            val r = contacts.recordPoint(c, p)
+            if records(r + RelativeVelocity) < -threshold && records(r + MaxNormalImpulse) > 0 then
               val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
               val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
               val dvx = state(sB + VelocityX) - state(sB + AngularVelocity) * rBy - state(sA + VelocityX) +
@@ -374,8 +382,8 @@ private[sims] object ContactConstraints:
               // Bouncing at -e u instead lost up to a substep's travel of height at every
               // bounce (1.8% of a 1 m drop at e = 1); without gravity and forces it is -e u.
               val free = freeAlongNormal(contacts, c, q, bodies, gx, gy, h)
-              val recorded = hot(q + ImpactGap)
-              val impact = if recorded < 0 then hot(q + RelativeVelocity) + free else hot(q + RelativeVelocity)
+              val recorded = records(r + ImpactGap)
+              val impact = if recorded < 0 then records(r + RelativeVelocity) + free else records(r + RelativeVelocity)
               val phi = if impact < 0 then math.min(1.0, math.abs(recorded) / (-impact * h)) else 0.0
               val speed = -impact - free * (phi - 0.5)
               val gap = math.max(0.0, separationNow(contacts, c, q, bodies))

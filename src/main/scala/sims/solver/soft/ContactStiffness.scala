@@ -51,6 +51,8 @@ private[sims] final class ContactStiffness:
       // Never softer than the pair was: a stiffness that follows the load step by step pumps
       // energy into a loaded pile (a spring stiffer while compressed: parametric excitation).
       // Never beyond this step's limit either (the substeps or the pair's kind may have changed).
-      val needed = math.min(math.max(math.sqrt(load / loadDepth), hot(k + Stiffness)), factor * maximumOmega)
-      hot(k + Stiffness) = needed
+      val record = c * RecordStride
+      val needed = math.min(math.max(math.sqrt(load / loadDepth), contacts.records(record + Stiffness)),
+        factor * maximumOmega)
+      contacts.records(record + Stiffness) = needed
       if needed > factor * omega then Softness.write(needed / (2 * math.Pi), zeta, h, hot, k + BiasRate)

@@ -58,7 +58,7 @@ private[sims] object ContactTouching:
           touching += 1
           sumX += bodies.startX(a) + state(sA + ShiftX) + armAX
           sumY += bodies.startY(a) + state(sA + ShiftY) + armAY
-          fastest = math.max(fastest, -hot(q + RelativeVelocity))
+          fastest = math.max(fastest, -contacts.records(contacts.recordPoint(c, p) + RelativeVelocity))
         impulse += pushed
         p += 1
       points(c) = touching

@@ -119,6 +119,7 @@ private[sims] final class PairCollider:
     contacts.side(c) = old.side(last)
     ShortCopy.doubles(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
     ShortCopy.doubles(old.cold, last * ColdStride, contacts.cold, c * ColdStride, ColdStride)
+    ShortCopy.doubles(old.records, last * RecordStride, contacts.records, c * RecordStride, RecordStride)
     contacts.ids(2 * c) = old.ids(2 * last)
     contacts.ids(2 * c + 1) = old.ids(2 * last + 1)
 
@@ -271,7 +272,8 @@ private[sims] final class PairCollider:
     val contacts = target
     val points = old.pointCount(last)
     val k = old.offset(last)
-    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, old.hot(k + Stiffness))
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points,
+      old.records(last * RecordStride + Stiffness))
     contacts.side(c) = old.side(last)
     val hot = contacts.hot
     val cold = contacts.cold
@@ -396,14 +398,14 @@ private[sims] final class PairCollider:
     contacts.hot(k + NormalY) = ny
     contacts.hot(k + Friction) = a.friction * b.friction
     val restitution = a.restitution * b.restitution
-    contacts.hot(k + Restitution) = restitution
+    contacts.records(c * RecordStride + Restitution) = restitution
     if restitution != 0 then contacts.bouncing = true
-    contacts.hot(k + Stiffness) = stiffness
+    contacts.records(c * RecordStride + Stiffness) = stiffness
     c
 
   /** The stiffness the last step's contact `last` of the pair had (0 if none: see [[ContactStiffness]]). */
   private def stiffnessOf(last: Int): Double =
-    if last >= 0 then table.committed.hot(table.committed.offset(last) + Stiffness) else 0.0
+    if last >= 0 then table.committed.records(last * RecordStride + Stiffness) else 0.0
 
 private[sims] object PairCollider:
   /** Class pairs a shared collider remembers. */
