@@ -29,7 +29,7 @@ private[sims] final class ContactStiffness:
     static.set(staticFactor * omega / (2 * math.Pi), zeta, h)
 
   /** Writes the softness of contact c (against a fixed body if `isStatic`) into its hot block.
-    * Writes contact c's block alone (no scratch shared between contacts): contacts may be set
+    * Writes contact c's hot block and record alone (no scratch shared between contacts): contacts may be set
     * from several threads at once.
     */
   def set(contacts: Contacts, c: Int, isStatic: Boolean): Unit =

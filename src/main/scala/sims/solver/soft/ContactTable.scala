@@ -285,7 +285,7 @@ private[sims] final class Contacts:
   var records: Array[Double] = new Array[Double](16 * RecordStride)
   /** Per contact c, its bodies' inverse masses and inertias for the passes, (mA, iA, mB, iB) at
     * 4 c: read in contact order, not gathered from the bodies' arrays in every pass. Set by the
-    * solver's preparation (not part of a contact's record: not copied, not saved).
+    * solver's preparation (not copied with a contact, not saved).
     */
   var masses: Array[Double] = new Array[Double](0)
 
