@@ -143,7 +143,6 @@ private[sims] object ContactConstraints:
       val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
       var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
       var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
-      val r0 = contacts.recordPoint(c, 0)
       // B's displacement relative to A's since the step began, and their turns: the points'
       // current separations.
       val dpx = state(sB + ShiftX) - state(sA + ShiftX)
@@ -159,7 +158,7 @@ private[sims] object ContactConstraints:
       val rnB0 = hot(q0 + AnchorBX) * ny - hot(q0 + AnchorBY) * nx
       val turnA0 = iA * rnA0; val turnB0 = iB * rnB0
       val vn0 = ((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB0 - wA * rnA0)
-      val impulse0 = solveNormal(hot, k, q0, s0, vn0, inverseH, contactSpeed, useBias, bouncing, records, r0)
+      val impulse0 = solveNormal(hot, k, q0, s0, vn0, inverseH, contactSpeed, useBias, bouncing, records, c, 0)
       val two = contacts.pointCount(c) == 2
       if !two then
         vAx -= impulse0 * mAnx; vAy -= impulse0 * mAny; wA -= impulse0 * turnA0
@@ -172,8 +171,7 @@ private[sims] object ContactConstraints:
         val turnA1 = iA * rnA1; val turnB1 = iB * rnB1
         val coupling = (mA + mB) + (turnA0 * rnA1 + turnB0 * rnB1)
         val vn1 = (((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB1 - wA * rnA1)) + coupling * impulse0
-        val impulse1 = solveNormal(hot, k, q1, s1, vn1, inverseH, contactSpeed, useBias, bouncing, records,
-          r0 + RecordPoint)
+        val impulse1 = solveNormal(hot, k, q1, s1, vn1, inverseH, contactSpeed, useBias, bouncing, records, c, 1)
         val both = impulse0 + impulse1
         vAx -= both * mAnx; vAy -= both * mAny; wA -= impulse0 * turnA0 + impulse1 * turnA1
         vBx += both * mBnx; vBy += both * mBny; wB += impulse0 * turnB0 + impulse1 * turnB1
@@ -218,12 +216,12 @@ private[sims] object ContactConstraints:
     val dy = dpy + (sinB * rBx + cosB * rBy) - (sinA * rAx + cosA * rAy)
     dx * nx + dy * ny + hot(q + BaseSeparation)
 
-  /** The normal impulse of the point at q (of the contact at k, its record at r), separation s,
-    * normal velocity vn: the soft rule's (see the object's comment), accumulated and clamped at
-    * 0, and the records restitution needs; returns the impulse to apply.
+  /** The normal impulse of point p at q of contact c (its hot block at k), separation s, normal
+    * velocity vn: the soft rule's (see the object's comment), accumulated and clamped at 0, and
+    * the records restitution needs (in `records`); returns the impulse to apply.
     */
   private inline def solveNormal(hot: Array[Double], k: Int, q: Int, s: Double, vn: Double, inverseH: Double,
-      contactSpeed: Double, useBias: Boolean, bouncing: Boolean, records: Array[Double], r: Int): Double =
+      contactSpeed: Double, useBias: Boolean, bouncing: Boolean, records: Array[Double], c: Int, p: Int): Double =
     val accumulated = hot(q + NormalImpulse)
     val normalMass = hot(q + NormalMass)
     var slope = normalMass
@@ -254,6 +252,7 @@ private[sims] object ContactConstraints:
     // in), negative when a relax pass did (its gap after the substep's positions: it meets
     // in the next substep), 0 when the bodies touched already.
     if bouncing then
+      val r = c * RecordStride + RecordHeader + p * RecordPoint
       val strongest = records(r + MaxNormalImpulse)
       if s > 0 && impulse > 0 && strongest == 0 then records(r + ImpactGap) = if useBias then s else -s
       if impulse > strongest then records(r + MaxNormalImpulse) = impulse
