@@ -2,7 +2,9 @@
 // Chromium), as `sims.bench.Alternate` does on the JVM: the same scene is built from each
 // bundle, warmed up, then stepped in turns of 5 steps, the order reversed every other turn, so
 // that a change in the machine's load falls on every build alike. Prints each build's median
-// time per step and its median ratio to the first build's time in the same turn.
+// time per step and its median ratio to the first build's time in the same turn. The bundle
+// loaded first may run a few per cent faster whatever its code: run both orders, and take
+// r = sqrt(ratio1 / ratio2).
 //
 //   node bench/browser/alternate.js <scene> <ClassicStep|SoftStep> <seconds> <bundle> <bundle> [...]
 //
