@@ -294,8 +294,6 @@ private[io] object WorldReader:
       table.ids(2 * c + 1) = in.readInt()
       table.side(c) = in.readInt()
       // Before version 5 a point's block had no ImpactGap (its last slot): it stays 0.
-      val perPoint = ContactTable.savedPoint(version)
-      val block = Array.fill(ContactTable.savedHeader + table.pointCount(c) * perPoint)(in.readDouble())
-      ContactTable.load(table, c, block, perPoint)
+      ContactTable.load(table, c, () => in.readDouble(), ContactTable.savedPoint(version))
       for k <- 0 until ContactTable.ColdStride do table.cold(c * ContactTable.ColdStride + k) = in.readDouble()
     world.workspace(classOf[SoftWorkspace], SoftWorkspace()).table.restoreCommitted(table)

@@ -189,38 +189,27 @@ private[sims] object ContactTable:
   private val SavedPoint = Array(AnchorAX, AnchorAY, AnchorBX, AnchorBY, BaseSeparation, NormalMass, TangentMass,
     NormalImpulse, TangentImpulse, -1 - MaxNormalImpulse, -1 - RelativeVelocity, TotalNormalImpulse, -1 - ImpactGap)
 
-  /** Number of doubles a contact's header has in the saved block. */
-  def savedHeader: Int = SavedHeader.length
-
   /** Number of doubles a point has in the saved block of format `version`. */
   def savedPoint(version: Int): Int = if version >= 5 then SavedPoint.length else SavedPoint.length - 1
 
   /** Contact c's hot block and record in the save format's order. */
   def saved(contacts: Contacts, c: Int): Array[Double] =
-    val out = new Array[Double](SavedHeader.length + contacts.pointCount(c) * SavedPoint.length)
-    var i = 0
-    while i < out.length do
+    val slots = SavedHeader.length + contacts.pointCount(c) * SavedPoint.length
+    Array.tabulate(slots) { i =>
       val (inHot, at) = savedSlot(contacts, c, i)
-      out(i) = if inHot then contacts.hot(at) else contacts.records(at)
-      i += 1
-    out
+      if inHot then contacts.hot(at) else contacts.records(at)
+    }
 
-  /** Sets contact c's hot block and record from `values`, in the save format's order with
-    * `perPoint` doubles a point (see `savedPoint`; a point's later slots stay 0).
+  /** Sets contact c's hot block and record from `read`, which gives them in the save format's
+    * order with `perPoint` doubles a point (see `savedPoint`; a point's later slots are 0).
     */
-  def load(contacts: Contacts, c: Int, values: Array[Double], perPoint: Int): Unit =
-    val points = contacts.pointCount(c)
-    var i = 0
-    while i < SavedHeader.length + points * SavedPoint.length do
-      val point = i - SavedHeader.length
-      val value =
-        if point < 0 then values(i)
-        else if point % SavedPoint.length < perPoint then
-          values(SavedHeader.length + point / SavedPoint.length * perPoint + point % SavedPoint.length)
-        else 0.0
+  def load(contacts: Contacts, c: Int, read: () => Double, perPoint: Int): Unit =
+    def put(i: Int, value: Double): Unit =
       val (inHot, at) = savedSlot(contacts, c, i)
       if inHot then contacts.hot(at) = value else contacts.records(at) = value
-      i += 1
+    for i <- SavedHeader.indices do put(i, read())
+    for p <- 0 until contacts.pointCount(c); k <- SavedPoint.indices do
+      put(SavedHeader.length + p * SavedPoint.length + k, if k < perPoint then read() else 0.0)
 
   /** Where slot i of contact c's saved block is: in `hot` or in `records`, and at which index. */
   private def savedSlot(contacts: Contacts, c: Int, i: Int): (Boolean, Int) =
