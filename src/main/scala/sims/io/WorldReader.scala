@@ -295,5 +295,5 @@ private[io] object WorldReader:
       table.side(c) = in.readInt()
       // Before version 5 a point's block had no ImpactGap (its last slot): it stays 0.
       ContactTable.load(table, c, () => in.readDouble(), ContactTable.savedPoint(version))
-      for k <- 0 until ContactTable.ColdStride do table.cold(c * ContactTable.ColdStride + k) = in.readDouble()
+      for k <- 0 until ContactTable.ColdStride do table.cold(table.coldOffset(c) + k) = in.readDouble()
     world.workspace(classOf[SoftWorkspace], SoftWorkspace()).table.restoreCommitted(table)

@@ -219,7 +219,7 @@ private[io] object WorldWriter:
           // whatever an earlier contact left there. Written as zeros: the same world, the same bytes.
           val used = ContactTable.ColdHeader + table.pointCount(c) * ContactTable.ColdPoint
           for k <- 0 until ContactTable.ColdStride do
-            out.writeDouble(if k < used then table.cold(c * ContactTable.ColdStride + k) else 0.0)
+            out.writeDouble(if k < used then table.cold(table.coldOffset(c) + k) else 0.0)
 
   /** The soft step's data of `world`, if it has stepped with the soft step. */
   private def softWorkspace(world: World): Option[SoftWorkspace] =

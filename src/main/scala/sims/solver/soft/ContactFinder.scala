@@ -29,9 +29,10 @@ import sims.solver.Workers
   * its contacts from its detector's `collisions`, treated as user kinds.
   *
   * Shared out (several workers, many pairs, no body asleep): ranges of pairs are collided at
-  * once, each by a [[PairCollider]] of its own into contacts of its own, then copied into the
-  * step's contacts in the ranges' order: the same contacts, in the same order, with the same
-  * bits as on one thread. A step with a pair of a user's kinds is collided on one thread (user
+  * once, each by a [[PairCollider]] of its own into contacts of its own, whose hot and cold
+  * blocks go straight into a region of the step's arrays (room for a contact per pair), then
+  * gathered into the step's contacts in the ranges' order: the same contacts, in the same order,
+  * with the same bits as on one thread. A step with a pair of a user's kinds is collided on one thread (user
   * code need not be safe to run on several at once).
   */
 private[sims] final class ContactFinder:
@@ -40,7 +41,7 @@ private[sims] final class ContactFinder:
   private var colliders = new Array[PairCollider](0)
   private var stages = new Array[Contacts](0)
   private var failures = new Array[Throwable](0)
-  private var base, hotBase = new Array[Int](0)
+  private var base = new Array[Int](0)
   private var bodies: SoftBodies = null
   private var world: World = null
   // The shared stage under way: its pairs (or the world's shapes), its ranges, the contacts
@@ -63,7 +64,7 @@ private[sims] final class ContactFinder:
         i += 1
     catch case e: Throwable => failures(index) = e
 
-  private val placeTask: Workers.Task = index => current.place(stages(index), base(index), hotBase(index))
+  private val placeTask: Workers.Task = index => current.place(stages(index), base(index))
 
   // A shared broadphase: its grid, and per range of shapes its pairs and how many it tested.
   private var grid: sims.collision.broadphase.UniformGrid = null
@@ -217,7 +218,6 @@ private[sims] final class ContactFinder:
       stages = Array.fill(count)(Contacts())
       failures = new Array[Throwable](count)
       base = new Array[Int](count)
-      hotBase = new Array[Int](count)
     this.pairs = pairs
     ranges = count
     // The shapes' cached geometry (a polygon's side normals) computed before the ranges read it.
@@ -226,9 +226,16 @@ private[sims] final class ContactFinder:
     workers.run(count, refreshTask)
     shapes = null
     items = pairs.size
+    // Each range's blocks in a region of the step's arrays with room for a contact of two points
+    // per pair (a pair makes one contact at most): gathering the ranges then copies no block.
+    val target = table.current
+    target.reserve(items * ContactFinder.MaxHot, items * ContactTable.ColdStride)
     var r = 0
     while r < count do
-      stages(r).clear()
+      val pairsBefore = from(r)
+      val pairsAfter = from(r + 1)
+      stages(r).share(target, target.hotSize + pairsBefore * ContactFinder.MaxHot, target.hotSize + pairsAfter * ContactFinder.MaxHot,
+        target.coldSize + pairsBefore * ContactTable.ColdStride, target.coldSize + pairsAfter * ContactTable.ColdStride)
       colliders(r).begin(world, table, bodies, stages(r), speculativeDistance, linearSlop, persistence, shared = true)
       failures(r) = null
       r += 1
@@ -247,16 +254,13 @@ private[sims] final class ContactFinder:
         r += 1
       current = table.current
       var more = 0
-      var moreHot = 0
       r = 0
       while r < count do
         base(r) = current.count + more
-        hotBase(r) = current.hotSize + moreHot
         more += stages(r).count
-        moreHot += stages(r).hotSize
         if stages(r).bouncing then current.bouncing = true
         r += 1
-      current.extend(more, moreHot)
+      current.extend(more, current.hotSize + items * ContactFinder.MaxHot, current.coldSize + items * ContactTable.ColdStride)
       workers.run(count, placeTask)
       current = null
       true
@@ -291,5 +295,8 @@ private[sims] final class ContactFinder:
   override def toString: String = s"ContactFinder(ranges = ${colliders.length})"
 
 private object ContactFinder:
+  /** The most hot doubles one contact takes: two points. */
+  inline val MaxHot = ContactTable.Header + 2 * ContactTable.HotPoint
+
   /** Ranges of pairs per worker in a shared stage: a worker that starts late finds work left. */
   inline val RangesPerWorker = 4

@@ -221,7 +221,7 @@ private[sims] object ContactTable:
       val code = SavedPoint((i - SavedHeader.length) % SavedPoint.length)
       if code >= 0 then (true, contacts.hotPoint(c, p) + code) else (false, contacts.recordPoint(c, p) - 1 - code)
 
-  // A contact's cold block in `Contacts.cold`, at `c * ColdStride`: what the collision stage
+  // A contact's cold block in `Contacts.cold`, at `coldOffset(c)`: what the collision stage
   // keeps for the next step. The bodies' placements when the manifold was computed: both
   // rotations and cB - cA, for keeping it (see ContactFinder).
   inline val CachedAngleA = 0
@@ -244,7 +244,12 @@ private[sims] object ContactTable:
 /** One generation of contacts, in flat arrays: contact c has shapes, bodies (their indices),
   * the pair's key, point count and ids, the polygon side a polygon-circle contact was measured
   * from, a hot block of doubles at `offset(c)` in `hot`, a record at `c * RecordStride` in
-  * `records` and a cold block at `c * ColdStride` in `cold` (see [[ContactTable]]'s offsets).
+  * `records` and a cold block of `ColdStride` doubles at `coldOffset(c)` in `cold` (see
+  * [[ContactTable]]'s offsets).
+  *
+  * A contact's hot and cold blocks are found through its offsets, so the contacts of a range of
+  * pairs collided on another thread may be written straight into a region of this generation's
+  * `hot` and `cold` (see `share`): gathering them then copies the per-contact arrays alone.
   */
 private[sims] final class Contacts:
   import ContactTable.*
@@ -266,10 +271,15 @@ private[sims] final class Contacts:
   var ids: Array[Int] = new Array[Int](32)
   var side: Array[Int] = new Array[Int](16)
   var offset: Array[Int] = new Array[Int](16)
+  var coldOffset: Array[Int] = new Array[Int](16)
   var hot: Array[Double] = new Array[Double](16 * (Header + HotPoint))
-  /** Doubles of `hot` in use. */
+  /** Doubles of `hot` in use (the blocks end there; a shared generation's may leave gaps). */
   var hotSize: Int = 0
   var cold: Array[Double] = new Array[Double](16 * ColdStride)
+  /** Doubles of `cold` in use. */
+  var coldSize: Int = 0
+  // Where the region of `hot` and `cold` this generation writes into ends, when `share` gave it one.
+  private var hotLimit, coldLimit = Int.MaxValue
   /** Per contact c, its record at `c * RecordStride` (see [[ContactTable]]'s offsets). */
   var records: Array[Double] = new Array[Double](16 * RecordStride)
   /** Per contact c, its bodies' inverse masses and inertias for the passes, (mA, iA, mB, iB) at
@@ -286,39 +296,61 @@ private[sims] final class Contacts:
   def add(points: Int): Int =
     if count == keys.length then grow(2 * count)
     val size = Header + points * HotPoint
+    if hotSize + size > hotLimit || coldSize + ColdStride > coldLimit then
+      throw IllegalStateException(s"a shared range of contacts outgrew its region: hot $hotSize + $size of $hotLimit, " +
+        s"cold $coldSize + $ColdStride of $coldLimit")
     if hotSize + size > hot.length then hot = java.util.Arrays.copyOf(hot, 2 * (hotSize + size))
+    if coldSize + ColdStride > cold.length then cold = java.util.Arrays.copyOf(cold, 2 * (coldSize + ColdStride))
     offset(count) = hotSize
+    coldOffset(count) = coldSize
     pointCount(count) = points
     hotSize += size
+    coldSize += ColdStride
     count += 1
     count - 1
 
-  /** Counts `more` contacts of `moreHot` hot doubles as added after the present ones, their
-    * records to be filled by `place`.
+  /** Makes room for `hotDoubles` more doubles in `hot` and `coldDoubles` in `cold` after those in
+    * use (the regions `share` hands out), keeping the present ones.
     */
-  def extend(more: Int, moreHot: Int): Unit =
-    if count + more > keys.length then grow(2 * (count + more))
-    if hotSize + moreHot > hot.length then hot = java.util.Arrays.copyOf(hot, 2 * (hotSize + moreHot))
-    count += more
-    hotSize += moreHot
+  def reserve(hotDoubles: Int, coldDoubles: Int): Unit =
+    if hotSize + hotDoubles > hot.length then hot = java.util.Arrays.copyOf(hot, 2 * (hotSize + hotDoubles))
+    if coldSize + coldDoubles > cold.length then cold = java.util.Arrays.copyOf(cold, 2 * (coldSize + coldDoubles))
 
-  /** Copies every contact of `from` (but its `bouncing`) to contacts `base` on, their hot blocks
-    * to `hotBase` on: room made by `extend`. Writes only those contacts' slots, so that the
-    * copies of several generations into one may run at once.
+  /** Empties this generation and makes it write its contacts' hot and cold blocks into `into`'s
+    * arrays, from `hotStart` and `coldStart` on, never past `hotEnd` and `coldEnd` (room made by
+    * `into.reserve`): a range of pairs collided on its own thread, its blocks where the step's
+    * passes will read them. Gathered with `into.place`.
     */
-  def place(from: Contacts, base: Int, hotBase: Int): Unit =
+  def share(into: Contacts, hotStart: Int, hotEnd: Int, coldStart: Int, coldEnd: Int): Unit =
+    clear()
+    hot = into.hot
+    cold = into.cold
+    hotSize = hotStart
+    coldSize = coldStart
+    hotLimit = hotEnd
+    coldLimit = coldEnd
+
+  /** Counts `more` contacts as added after the present ones, their slots to be filled by `place`,
+    * and the blocks in use up to `hotEnd` and `coldEnd`.
+    */
+  def extend(more: Int, hotEnd: Int, coldEnd: Int): Unit =
+    if count + more > keys.length then grow(2 * (count + more))
+    count += more
+    hotSize = hotEnd
+    coldSize = coldEnd
+
+  /** Copies every contact of `from` (but its `bouncing`) to contacts `base` on: room made by
+    * `extend`, their hot and cold blocks already in this generation's arrays (see `share`). Writes
+    * only those contacts' slots, so that several generations may be gathered into one at once.
+    */
+  def place(from: Contacts, base: Int): Unit =
     val n = from.count
     System.arraycopy(from.shapeA, 0, shapeA, base, n); System.arraycopy(from.shapeB, 0, shapeB, base, n)
     System.arraycopy(from.bodyA, 0, bodyA, base, n); System.arraycopy(from.bodyB, 0, bodyB, base, n)
     System.arraycopy(from.keys, 0, keys, base, n); System.arraycopy(from.pointCount, 0, pointCount, base, n)
     System.arraycopy(from.ids, 0, ids, 2 * base, 2 * n); System.arraycopy(from.side, 0, side, base, n)
-    System.arraycopy(from.cold, 0, cold, base * ColdStride, n * ColdStride)
+    System.arraycopy(from.offset, 0, offset, base, n); System.arraycopy(from.coldOffset, 0, coldOffset, base, n)
     System.arraycopy(from.records, 0, records, base * RecordStride, n * RecordStride)
-    System.arraycopy(from.hot, 0, hot, hotBase, from.hotSize)
-    var c = 0
-    while c < n do
-      offset(base + c) = from.offset(c) + hotBase
-      c += 1
 
   /** Forgets every contact. */
   def clear(): Unit =
@@ -326,6 +358,9 @@ private[sims] final class Contacts:
     active = 0
     bouncing = false
     hotSize = 0
+    coldSize = 0
+    hotLimit = Int.MaxValue
+    coldLimit = Int.MaxValue
 
   /** Where point p of contact c starts in `hot`. */
   inline def hotPoint(c: Int, p: Int): Int = offset(c) + Header + p * HotPoint
@@ -334,24 +369,25 @@ private[sims] final class Contacts:
   inline def recordPoint(c: Int, p: Int): Int = c * RecordStride + RecordHeader + p * RecordPoint
 
   /** Where point p of contact c starts in `cold`. */
-  inline def coldPoint(c: Int, p: Int): Int = c * ColdStride + ColdHeader + p * ColdPoint
+  inline def coldPoint(c: Int, p: Int): Int = coldOffset(c) + ColdHeader + p * ColdPoint
 
-  /** A deep copy. */
+  /** A deep copy, its blocks packed one after another (a shared generation's gaps left out). */
   def copy(): Contacts =
     val c = Contacts()
     c.grow(math.max(count, 16))
-    c.count = count
     c.active = active
     c.bouncing = bouncing
-    c.hotSize = hotSize
-    c.hot = java.util.Arrays.copyOf(hot, math.max(hotSize, 16))
     System.arraycopy(shapeA, 0, c.shapeA, 0, count); System.arraycopy(shapeB, 0, c.shapeB, 0, count)
     System.arraycopy(bodyA, 0, c.bodyA, 0, count); System.arraycopy(bodyB, 0, c.bodyB, 0, count)
-    System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(pointCount, 0, c.pointCount, 0, count)
-    System.arraycopy(ids, 0, c.ids, 0, 2 * count); System.arraycopy(side, 0, c.side, 0, count)
-    System.arraycopy(offset, 0, c.offset, 0, count)
-    System.arraycopy(cold, 0, c.cold, 0, count * ColdStride)
+    System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(ids, 0, c.ids, 0, 2 * count)
+    System.arraycopy(side, 0, c.side, 0, count)
     System.arraycopy(records, 0, c.records, 0, count * RecordStride)
+    var n = 0
+    while n < count do
+      val copied = c.add(pointCount(n))
+      System.arraycopy(hot, offset(n), c.hot, c.offset(copied), Header + pointCount(n) * HotPoint)
+      System.arraycopy(cold, coldOffset(n), c.cold, c.coldOffset(copied), ColdStride)
+      n += 1
     c
 
   private def grow(capacity: Int): Unit =
@@ -360,5 +396,5 @@ private[sims] final class Contacts:
     keys = java.util.Arrays.copyOf(keys, capacity); pointCount = java.util.Arrays.copyOf(pointCount, capacity)
     ids = java.util.Arrays.copyOf(ids, 2 * capacity); side = java.util.Arrays.copyOf(side, capacity)
     offset = java.util.Arrays.copyOf(offset, capacity)
-    cold = java.util.Arrays.copyOf(cold, capacity * ColdStride)
+    coldOffset = java.util.Arrays.copyOf(coldOffset, capacity)
     records = java.util.Arrays.copyOf(records, capacity * RecordStride)

@@ -118,7 +118,7 @@ private[sims] final class PairCollider:
     val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0)
     contacts.side(c) = old.side(last)
     ShortCopy.doubles(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
-    ShortCopy.doubles(old.cold, last * ColdStride, contacts.cold, c * ColdStride, ColdStride)
+    ShortCopy.doubles(old.cold, old.coldOffset(last), contacts.cold, contacts.coldOffset(c), ColdStride)
     ShortCopy.doubles(old.records, last * RecordStride, contacts.records, c * RecordStride, RecordStride)
     contacts.ids(2 * c) = old.ids(2 * last)
     contacts.ids(2 * c + 1) = old.ids(2 * last + 1)
@@ -246,7 +246,7 @@ private[sims] final class PairCollider:
   private def keeps(old: Contacts, last: Int, shapeA: Shape, shapeB: Shape): Boolean =
     val a = shapeA.body.index
     val b = shapeB.body.index
-    val k = last * ColdStride
+    val k = old.coldOffset(last)
     val turnA = bodies.startAngle(a) - old.cold(k + CachedAngleA)
     val turnB = bodies.startAngle(b) - old.cold(k + CachedAngleB)
     if math.abs(turnA) >= PairCollider.KeepAngle || math.abs(turnB) >= PairCollider.KeepAngle then false
@@ -277,8 +277,8 @@ private[sims] final class PairCollider:
     contacts.side(c) = old.side(last)
     val hot = contacts.hot
     val cold = contacts.cold
-    val oldCold = last * ColdStride
-    ShortCopy.doubles(old.cold, oldCold, cold, c * ColdStride, ColdStride)
+    val oldCold = old.coldOffset(last)
+    ShortCopy.doubles(old.cold, oldCold, cold, contacts.coldOffset(c), ColdStride)
     val ia = contacts.bodyA(c)
     val ib = contacts.bodyB(c)
     val turnA = bodies.startAngle(ia) - old.cold(oldCold + CachedAngleA)
@@ -338,7 +338,7 @@ private[sims] final class PairCollider:
   private def cachePlacements(contacts: Contacts, c: Int): Unit =
     val a = contacts.bodyA(c)
     val b = contacts.bodyB(c)
-    val k = c * ColdStride
+    val k = contacts.coldOffset(c)
     contacts.cold(k + CachedAngleA) = bodies.startAngle(a)
     contacts.cold(k + CachedAngleB) = bodies.startAngle(b)
     // cB - cA in the world frame; `keeps` turns the current one back by A's turn since.

@@ -99,3 +99,53 @@ class ContactTableSpec extends AnyFunSuite:
     undone.begin()
     assert(Seq(7L, 3L, 12L, 40L, 5L).map(undone.lastOf) == Seq(0, 1, 2, -1, -1))
   }
+
+  test("ranges written into shared regions and gathered equal the same contacts added one after another") {
+    import ContactTable.*
+    val points = Seq(1, 2, 2, 1, 1, 2, 1)
+    // Each contact's hot, cold and record slots numbered apart from the others'.
+    def fill(contacts: Contacts, c: Int, n: Int): Unit =
+      contacts.keys(c) = 100L + n
+      contacts.bodyA(c) = n
+      for i <- 0 until Header + contacts.pointCount(c) * HotPoint do contacts.hot(contacts.offset(c) + i) = 1000.0 * n + i
+      for i <- 0 until ColdStride do contacts.cold(contacts.coldOffset(c) + i) = -1000.0 * n - i
+      for i <- 0 until RecordStride do contacts.records(c * RecordStride + i) = 0.5 * n + i
+    val serial = Contacts()
+    for (p, n) <- points.zipWithIndex do fill(serial, serial.add(p), n)
+    // Two ranges of pairs (4 and 3), each with room for a two-point contact per pair; the
+    // second range makes one contact fewer than it has pairs, which leaves a gap.
+    val gathered = Contacts()
+    val maxHot = Header + 2 * HotPoint
+    gathered.reserve(8 * maxHot, 8 * ColdStride)
+    val ranges = Seq(Contacts(), Contacts())
+    ranges(0).share(gathered, 0, 4 * maxHot, 0, 4 * ColdStride)
+    ranges(1).share(gathered, 4 * maxHot, 8 * maxHot, 4 * ColdStride, 8 * ColdStride)
+    for (p, n) <- points.zipWithIndex do
+      val range = ranges(if n < 4 then 0 else 1)
+      fill(range, range.add(p), n)
+    gathered.extend(7, 8 * maxHot, 8 * ColdStride)
+    gathered.place(ranges(0), 0)
+    gathered.place(ranges(1), 4)
+    assert(ranges(1).offset(0) == 4 * maxHot)
+    for copy <- Seq(gathered, gathered.copy()) do
+      assert(copy.count == 7)
+      for c <- 0 until 7 do
+        assert(copy.keys(c) == serial.keys(c) && copy.bodyA(c) == serial.bodyA(c))
+        assert(copy.pointCount(c) == serial.pointCount(c))
+        for p <- 0 until copy.pointCount(c); i <- 0 until HotPoint do
+          assert(copy.hot(copy.hotPoint(c, p) + i) == serial.hot(serial.hotPoint(c, p) + i))
+        for i <- 0 until ColdStride do assert(copy.cold(copy.coldOffset(c) + i) == serial.cold(serial.coldOffset(c) + i))
+        for i <- 0 until RecordStride do assert(copy.records(c * RecordStride + i) == serial.records(c * RecordStride + i))
+    // The copy packs the blocks: no gap left.
+    assert(gathered.copy().hotSize == serial.hotSize && gathered.copy().coldSize == serial.coldSize)
+  }
+
+  test("a range that would outgrow its shared region is refused, naming the region") {
+    val gathered = Contacts()
+    val range = Contacts()
+    gathered.reserve(2 * ContactTable.Header + 2 * ContactTable.HotPoint, 2 * ContactTable.ColdStride)
+    range.share(gathered, 0, ContactTable.Header + ContactTable.HotPoint, 0, 2 * ContactTable.ColdStride)
+    range.add(1)
+    val error = intercept[IllegalStateException](range.add(1))
+    assert(error.getMessage.contains("outgrew its region"))
+  }
