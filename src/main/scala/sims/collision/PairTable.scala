@@ -3,22 +3,18 @@ package sims.collision
 import sims.dynamics.Shape
 
 /** A table of pairs of shapes: a hash table by open addressing from a pair's key ([[PairKey]])
-  * to its two shapes and a stamp (for the soft step's contact table, the index of the pair's
-  * contact; the open pairs of a [[PairTracker]] need none). A key and its stamp share a cache line, so
+  * to its two shapes and a stamp (the open pairs of a [[PairTracker]]). A key and its stamp share a cache line, so
   * touching a pair costs one probe; pairs leave by tombstone, so a scan over the slots may
   * remove what it visits. Slot order depends on the keys and on the order of changes only: what
   * the tracker reports from a scan it sorts by key, so nothing depends on it.
-  *
-  * A table made with `keepsShapes = false` holds keys and stamps only (the contact table's index,
-  * rebuilt every step, which needs no shapes and should not clear arrays of them).
   */
-private[sims] final class PairTable(keepsShapes: Boolean = true):
+private[sims] final class PairTable:
   import PairTable.*
 
   // Slot s: cells(2 s) = its key (or Empty, Removed), cells(2 s + 1) = its stamp.
   private var cells = emptyCells(64)
-  private var firsts = shapeSlots(64)
-  private var seconds = shapeSlots(64)
+  private var firsts = new Array[Shape](64)
+  private var seconds = new Array[Shape](64)
   // The arrays of the last rehash at this size, for the next: clearing out removed slots, as a
   // table whose pairs come and go must do every few steps, allocates nothing.
   private var spareCells = Array.emptyLongArray
@@ -49,11 +45,11 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
   /** Sets the stamp of the pair in `slot`. */
   def stamp(slot: Int, value: Long): Unit = cells(2 * slot + 1) = value
 
-  /** The first shape of the pair in `slot` (null in a table that keeps no shapes). */
-  def firstAt(slot: Int): Shape = if keepsShapes then firsts(slot) else null
+  /** The first shape of the pair in `slot`. */
+  def firstAt(slot: Int): Shape = firsts(slot)
 
-  /** The second shape of the pair in `slot` (null in a table that keeps no shapes). */
-  def secondAt(slot: Int): Shape = if keepsShapes then seconds(slot) else null
+  /** The second shape of the pair in `slot`. */
+  def secondAt(slot: Int): Shape = seconds(slot)
 
   /** The slot of `key`, or -1. */
   def find(key: Long): Int =
@@ -72,33 +68,13 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
   /** Counts the rehashes, each of which moves every pair to another slot. */
   def rehashes: Int = rehashCount
 
-  /** Sets the stamp of `key`, adding the pair (with no shapes) if it is not in the table: one
-    * probe where `find` and then `insert` take two.
-    */
-  def put(key: Long, stampValue: Long): Unit =
-    var slot = hash(key) & mask
-    var reusable = -1 // the first removed slot on the way, where `place` would put the pair
-    var k = cells(2 * slot)
-    while k != Empty && k != key do
-      if k == Removed && reusable < 0 then reusable = slot
-      slot = (slot + 1) & mask
-      k = cells(2 * slot)
-    if k == key then cells(2 * slot + 1) = stampValue
-    else if 2 * (live + removed + 1) > slots then insert(key, null, null, stampValue)
-    else
-      if reusable >= 0 then
-        slot = reusable
-        removed -= 1
-      fill(slot, key, stampValue)
-
   private def place(key: Long, first: Shape, second: Shape, stampValue: Long): Int =
     var slot = hash(key) & mask
     while cells(2 * slot) >= 0 do slot = (slot + 1) & mask // past live slots to an empty or removed one
     if cells(2 * slot) == Removed then removed -= 1
     fill(slot, key, stampValue)
-    if keepsShapes then
-      firsts(slot) = first
-      seconds(slot) = second
+    firsts(slot) = first
+    seconds(slot) = second
     slot
 
   private def fill(slot: Int, key: Long, stampValue: Long): Unit =
@@ -111,9 +87,8 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
   /** Takes the pair in `slot` out. */
   def remove(slot: Int): Unit =
     cells(2 * slot) = Removed
-    if keepsShapes then
-      firsts(slot) = null
-      seconds(slot) = null
+    firsts(slot) = null
+    seconds(slot) = null
     live -= 1
     removed += 1
 
@@ -124,20 +99,16 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
       while i < filled do
         val slot = filledSlots(i)
         cells(2 * slot) = Empty
-        if keepsShapes then
-          firsts(slot) = null
-          seconds(slot) = null
+        firsts(slot) = null
+        seconds(slot) = null
         i += 1
     else
       java.util.Arrays.fill(cells, Empty)
-      if keepsShapes then
-        java.util.Arrays.fill(firsts.asInstanceOf[Array[AnyRef]], null)
-        java.util.Arrays.fill(seconds.asInstanceOf[Array[AnyRef]], null)
+      java.util.Arrays.fill(firsts.asInstanceOf[Array[AnyRef]], null)
+      java.util.Arrays.fill(seconds.asInstanceOf[Array[AnyRef]], null)
     filled = 0
     live = 0
     removed = 0
-
-  private def shapeSlots(capacity: Int): Array[Shape] = if keepsShapes then new Array[Shape](capacity) else Array.empty
 
   /** Moves the pairs into arrays of `capacity` slots (the spare ones if they have that size),
     * leaving out the removed slots.
@@ -150,8 +121,8 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
       java.util.Arrays.fill(cells, Empty)
     else
       cells = emptyCells(capacity)
-      firsts = shapeSlots(capacity)
-      seconds = shapeSlots(capacity)
+      firsts = new Array[Shape](capacity)
+      seconds = new Array[Shape](capacity)
     mask = capacity - 1
     if filledSlots.length != capacity / 2 then filledSlots = new Array[Int](capacity / 2)
     filled = 0
@@ -160,8 +131,7 @@ private[sims] final class PairTable(keepsShapes: Boolean = true):
     var slot = 0
     while 2 * slot < oldCells.length do
       if oldCells(2 * slot) >= 0 then
-        if keepsShapes then place(oldCells(2 * slot), oldFirsts(slot), oldSeconds(slot), oldCells(2 * slot + 1))
-        else place(oldCells(2 * slot), null, null, oldCells(2 * slot + 1))
+        place(oldCells(2 * slot), oldFirsts(slot), oldSeconds(slot), oldCells(2 * slot + 1))
       slot += 1
     java.util.Arrays.fill(oldFirsts.asInstanceOf[Array[AnyRef]], null)
     java.util.Arrays.fill(oldSeconds.asInstanceOf[Array[AnyRef]], null)

@@ -36,37 +36,6 @@ class PairTableSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
     }
   }
 
-  test("property: put, remove and clear in a table without shapes hold what a map holds, and put places a pair where insert would") {
-    val operations = Gen.listOfN(3000, Gen.zip(Gen.choose(0, 2), Gen.choose(0L, 600L)))
-    forAll(operations, minSuccessful(30)) { ops =>
-      val lean = PairTable(keepsShapes = false)
-      val full = PairTable()
-      val model = collection.mutable.Map.empty[Long, Long]
-      for ((kind, key), step) <- ops.zipWithIndex do
-        val slot = lean.find(key)
-        (slot >= 0) shouldBe model.contains(key)
-        kind match
-          case 1 =>
-            if slot >= 0 then { lean.remove(slot); full.remove(full.find(key)); model.remove(key) }
-          case _ =>
-            lean.put(key, step)
-            val fullSlot = full.find(key)
-            if fullSlot >= 0 then full.stamp(fullSlot, step) else full.insert(key, shapes(0), shapes(1), step)
-            model(key) = step
-      lean.size shouldBe model.size
-      lean.slots shouldBe full.slots
-      for s <- 0 until lean.slots do
-        lean.keyAt(s) shouldBe full.keyAt(s)
-        if lean.keyAt(s) >= 0 then lean.stampAt(s) shouldBe full.stampAt(s)
-        lean.firstAt(s) shouldBe null
-        lean.secondAt(s) shouldBe null
-      model.foreach((key, stamp) => lean.stampAt(lean.find(key)) shouldBe stamp)
-      lean.clear()
-      (0 until lean.slots).count(lean.keyAt(_) != -1) shouldBe 0
-      model.keys.foreach(key => lean.find(key) shouldBe -1)
-    }
-  }
-
   test("clear empties every slot, whether it empties the filled ones alone or all of them") {
     val table = PairTable()
     // Fills, removes and fills again the same few slots more often than the log holds.
@@ -77,12 +46,11 @@ class PairTableSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
     table.clear()
     (0 until table.slots).count(table.keyAt(_) != -1) shouldBe 0
     (0 until table.slots).count(table.firstAt(_) != null) shouldBe 0
-    // Rebuilt every round, as the contact table's index is: each clear finds its pairs gone.
-    val lean = new PairTable(keepsShapes = false)
+    // Rebuilt every round: each clear finds its pairs gone.
     for round <- 0 until 50 do
-      lean.clear()
-      (0L until 200L).foreach(key => lean.put(key * 7919 + round, key))
-      lean.size shouldBe 200
-      (0L until 200L).foreach(key => lean.stampAt(lean.find(key * 7919 + round)) shouldBe key)
-      if round > 0 then lean.find(199L * 7919 + round - 1) shouldBe -1
+      table.clear()
+      (0L until 200L).foreach(key => table.insert(key * 7919 + round, shapes(0), shapes(1), key))
+      table.size shouldBe 200
+      (0L until 200L).foreach(key => table.stampAt(table.find(key * 7919 + round)) shouldBe key)
+      if round > 0 then table.find(199L * 7919 + round - 1) shouldBe -1
   }

@@ -1,6 +1,6 @@
 package sims.solver.soft
 
-import sims.collision.{PairKey, PairTable}
+import sims.collision.PairKey
 import sims.dynamics.Shape
 
 /** The soft step's contacts: one record per touching (or nearly touching) pair of shapes, with
@@ -74,15 +74,24 @@ private[sims] final class ContactTable:
     lookup.restart()
 
 private[sims] object ContactTable:
-  /** One generation's contacts by pair key: a table keyed by the pair (`PairKey`) whose slot
-    * holds the contact's index as its stamp, and a bit per hash of the keys (a Bloom filter, one
-    * hash): a pair whose bit is clear had no contact, which most candidate pairs without one
-    * learn there, in a table small enough to stay in the cache, instead of by a probe of the
-    * table. At least 8 bits per contact.
+  /** One generation's contacts by pair key (`PairKey`): each shape's contacts as the first of
+    * their pair, in a chain, and a bit per hash of the keys (a Bloom filter, one hash): a pair
+    * whose bit is clear had no contact, which most candidate pairs without one learn there, in a
+    * filter small enough to stay in the cache, instead of by a walk of the chain. At least 8
+    * bits per contact.
     */
   final class Index:
-    private val table = new PairTable(keepsShapes = false)
-    // Whether a lookup may guess: not when a pair is listed twice, since the table holds its
+    // Per bucket of first shapes (a shape's world index, the first half of a pair's key, modulo
+    // the buckets: a power of two, at least the contacts), its first indexed contact, or -1; per
+    // contact, the next one in its bucket, or -1: the contacts of a bucket in a chain, in contact
+    // order. Built in one pass over small arrays (a bucket, a contact's link), in much the order
+    // of the shapes, where a hash table's inserts each missed the cache.
+    private var head = Array.fill(16)(-1)
+    private var next = new Array[Int](0)
+    // The buckets the last build set, to reset them (not the whole array).
+    private var heads = new Array[Int](0)
+    private var headCount = 0
+    // Whether a lookup may guess: not when a pair is listed twice, since a lookup finds its
     // last contact, which a guess might miss.
     private var guessing = true
     private var filter = new Array[Long](1)
@@ -90,25 +99,50 @@ private[sims] object ContactTable:
 
     /** Indexes the contacts of `contacts`. */
     def build(contacts: Contacts): Unit =
-      table.clear()
+      val count = contacts.count
+      if head.length < count || head.length > 8 * count && head.length > 16 then
+        head = Array.fill(math.max(16, 2 * Integer.highestOneBit(math.max(count, 1))))(-1)
+      else
+        var h = 0
+        while h < headCount do
+          head(heads(h)) = -1
+          h += 1
+      headCount = 0
+      if next.length < count then next = new Array[Int](2 * count)
       // 8 to 64 bits per contact: a count that goes up and down does not reallocate every step.
-      val needed = 8L * contacts.count
+      val needed = 8L * count
       val bits = 64L * filter.length
       if bits < needed || bits > 8 * needed && bits > 64 then
-        filter = new Array[Long](math.max(1, Integer.highestOneBit(contacts.count) / 4))
+        filter = new Array[Long](math.max(1, Integer.highestOneBit(count) / 4))
       else java.util.Arrays.fill(filter, 0L)
       filterShift = 64 - Integer.numberOfTrailingZeros(64 * filter.length)
-      var c = 0
-      while c < contacts.count do
-        // A pair listed twice (a user's detector may) finds its last contact, as it always has.
-        table.put(contacts.keys(c), c)
-        val bit = filterBit(contacts.keys(c))
+      val keys = contacts.keys
+      var twice = false
+      // From the last contact back, so that each chain runs in contact order.
+      var c = count - 1
+      while c >= 0 do
+        val key = keys(c)
+        val first = bucketOf(key)
+        val later = head(first)
+        if later < 0 then
+          if headCount == heads.length then heads = java.util.Arrays.copyOf(heads, math.max(16, 2 * headCount))
+          heads(headCount) = first
+          headCount += 1
+        else if !twice then
+          // A pair listed twice (a user's detector may) has its other contact in this bucket.
+          var e = later
+          while e >= 0 && keys(e) != key do e = next(e)
+          twice = e >= 0
+        next(c) = later
+        head(first) = c
+        val bit = filterBit(key)
         filter(bit >>> 6) |= 1L << (bit & 63)
-        c += 1
-      guessing = table.size == contacts.count
+        c -= 1
+      guessing = !twice
 
     /** The contact of the pair `key` among `contacts` (the ones indexed), or -1, trying contact
-      * `guess` first, then (unless the filter rules the pair out) those near it, then the table.
+      * `guess` first, then (unless the filter rules the pair out) those near it, then the bucket
+      * of the pair's first shape (its last contact, for a pair listed twice).
       */
     def find(contacts: Contacts, key: Long, guess: Int): Int =
       if guessing && guess < contacts.count && contacts.keys(guess) == key then guess
@@ -117,8 +151,15 @@ private[sims] object ContactTable:
         val near = if guessing then PairKey.near(contacts.keys, contacts.count, guess, key) else -1
         if near >= 0 then near
         else
-          val slot = table.find(key)
-          if slot < 0 then -1 else table.stampAt(slot).toInt
+          var found = -1
+          var e = head(bucketOf(key))
+          while e >= 0 do
+            if contacts.keys(e) == key then found = e
+            e = next(e)
+          found
+
+    // The bucket of a pair's first shape (the key's first half, see PairKey.of).
+    private inline def bucketOf(key: Long): Int = (key >>> 32).toInt & (head.length - 1)
 
     private def mayHave(key: Long): Boolean =
       val bit = filterBit(key)

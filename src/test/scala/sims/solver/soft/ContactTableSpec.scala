@@ -43,14 +43,28 @@ class ContactTableSpec extends AnyFunSuite:
     "property: over thousands of contacts, in their order with some shifted, swapped, left out or new, or shuffled, lastOf gives what a map gives") {
     for seed <- 1 to 30 do
       val random = Random(seed)
-      val keys = random.shuffle((0L until 20000L).toVector).take(500 + random.nextInt(3000))
+      // Pairs of shapes (first, second) as PairKey makes them: up to 5 pairs a first shape, the
+      // first shapes' indices up to 4,000 (more than the index has buckets for a few thousand).
+      def pair(n: Long): Long = (n / 5) << 32 | (n % 5)
+      val keys = random.shuffle((0L until 20000L).toVector).take(500 + random.nextInt(3000)).map(pair)
       val table = committedWith(keys*)
       val where = keys.zipWithIndex.toMap
       val asked = random.nextInt(4) match
-        case 0 => random.shuffle(keys ++ Seq.fill(500)(20000L + random.nextInt(1000)))
+        case 0 => random.shuffle(keys ++ Seq.fill(500)((4000L + random.nextInt(1000)) << 32))
         case 1 => keys.grouped(3).flatMap(g => if random.nextBoolean() then g.reverse else g).toVector
-        case _ => keys.flatMap(k => if random.nextInt(10) == 0 then Seq(30000L + k) else if random.nextInt(10) == 0 then Nil else Seq(k))
+        case _ => keys.flatMap(k => if random.nextInt(10) == 0 then Seq(k | 8L) else if random.nextInt(10) == 0 then Nil else Seq(k))
       for key <- asked do assert(table.lastOf(key) == where.getOrElse(key, -1), s"seed $seed, key $key")
+  }
+
+  test("property: with some pairs listed twice, lastOf gives each pair's last contact, in any order asked") {
+    for seed <- 1 to 30 do
+      val random = Random(seed)
+      val distinct = random.shuffle((0L until 5000L).toVector).take(200 + random.nextInt(1000)).map(n => (n / 3) << 32 | n % 3)
+      val keys = random.shuffle(distinct ++ distinct.filter(_ => random.nextInt(20) == 0))
+      val table = committedWith(keys*)
+      val last = keys.zipWithIndex.toMap // a later index of a key replaces an earlier one
+      val asked = if random.nextBoolean() then keys else random.shuffle(keys)
+      for key <- asked do assert(table.lastOf(key) == last(key), s"seed $seed, key $key")
   }
 
   test("a new step looks from the first committed contact again") {
