@@ -282,6 +282,8 @@ private[io] object WorldReader:
   private def contacts(in: DataInputStream, world: World, version: Int): Unit =
     val shapes = world.shapes
     val table = Contacts()
+    // Saved by any detector: one of the user's may have listed a pair twice.
+    table.pairsRepeat = true
     for _ <- 0 until in.readInt() do
       val (a, b) = (shapes(in.readInt()), shapes(in.readInt()))
       val c = table.add(in.readInt())

@@ -147,6 +147,7 @@ private[sims] final class ContactFinder:
       case detector =>
         detector.detect()
         val collisions = detector.collisions
+        table.current.pairsRepeat = true
         // A detector of the user's finds every colliding pair: a sleeper colliding with a body
         // that wakes it wakes, and the islands it touches in turn.
         var woke = bodies.anyAsleep

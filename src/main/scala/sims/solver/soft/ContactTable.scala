@@ -128,8 +128,8 @@ private[sims] object ContactTable:
           if headCount == heads.length then heads = java.util.Arrays.copyOf(heads, math.max(16, 2 * headCount))
           heads(headCount) = first
           headCount += 1
-        else if !twice then
-          // A pair listed twice (a user's detector may) has its other contact in this bucket.
+        else if contacts.pairsRepeat && !twice then
+          // A pair listed twice has its other contact in this bucket.
           var e = later
           while e >= 0 && keys(e) != key do e = next(e)
           twice = e >= 0
@@ -305,6 +305,10 @@ private[sims] final class Contacts:
     * passes that only concern bouncing points have nothing to do.
     */
   var bouncing: Boolean = false
+  /** Whether a pair may have more than one contact (a detector of the user's may list a pair
+    * twice; the built-in one lists each pair once): the index then looks for a pair's last.
+    */
+  var pairsRepeat: Boolean = false
   var shapeA, shapeB: Array[Shape] = new Array[Shape](16)
   var bodyA, bodyB: Array[Int] = new Array[Int](16)
   var keys: Array[Long] = new Array[Long](16)
@@ -398,6 +402,7 @@ private[sims] final class Contacts:
     count = 0
     active = 0
     bouncing = false
+    pairsRepeat = false
     hotSize = 0
     coldSize = 0
     hotLimit = Int.MaxValue
@@ -418,6 +423,7 @@ private[sims] final class Contacts:
     c.grow(math.max(count, 16))
     c.active = active
     c.bouncing = bouncing
+    c.pairsRepeat = pairsRepeat
     System.arraycopy(shapeA, 0, c.shapeA, 0, count); System.arraycopy(shapeB, 0, c.shapeB, 0, count)
     System.arraycopy(bodyA, 0, c.bodyA, 0, count); System.arraycopy(bodyB, 0, c.bodyB, 0, count)
     System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(ids, 0, c.ids, 0, 2 * count)

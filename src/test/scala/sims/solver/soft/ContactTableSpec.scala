@@ -8,12 +8,16 @@ import org.scalatest.funsuite.AnyFunSuite
   */
 class ContactTableSpec extends AnyFunSuite:
   /** A table whose committed generation holds contacts with these keys, in this order. */
-  private def committedWith(keys: Long*): ContactTable =
+  private def committedWith(keys: Long*): ContactTable = committedListing(repeat = false, keys*)
+
+  /** `committedWith`, its contacts marked as possibly listing a pair twice if `repeat`. */
+  private def committedListing(repeat: Boolean, keys: Long*): ContactTable =
     val table = ContactTable()
     table.begin()
     for key <- keys do
       val c = table.current.add(1)
       table.current.keys(c) = key
+    table.current.pairsRepeat = repeat
     table.commit()
     table.begin()
     table
@@ -32,7 +36,7 @@ class ContactTableSpec extends AnyFunSuite:
   }
 
   test("a pair listed twice finds its last contact, even where the one after the last found is its first") {
-    val table = committedWith(7L, 3L, 12L, 3L)
+    val table = committedListing(repeat = true, 7L, 3L, 12L, 3L)
     assert(table.lastOf(7L) == 0)
     assert(table.lastOf(3L) == 3)
     assert(table.lastOf(12L) == 2)
@@ -61,7 +65,7 @@ class ContactTableSpec extends AnyFunSuite:
       val random = Random(seed)
       val distinct = random.shuffle((0L until 5000L).toVector).take(200 + random.nextInt(1000)).map(n => (n / 3) << 32 | n % 3)
       val keys = random.shuffle(distinct ++ distinct.filter(_ => random.nextInt(20) == 0))
-      val table = committedWith(keys*)
+      val table = committedListing(repeat = true, keys*)
       val last = keys.zipWithIndex.toMap // a later index of a key replaces an earlier one
       val asked = if random.nextBoolean() then keys else random.shuffle(keys)
       for key <- asked do assert(table.lastOf(key) == last(key), s"seed $seed, key $key")
@@ -162,4 +166,29 @@ class ContactTableSpec extends AnyFunSuite:
     range.add(1)
     val error = intercept[IllegalStateException](range.add(1))
     assert(error.getMessage.contains("outgrew its region"))
+  }
+
+  test("a detector of the user's that lists a pair twice: the step's contacts say pairs may repeat, and the last is found") {
+    import sims.collision.{CircleCollision, Collision, Detector}
+    import sims.dynamics.{Circle, World}
+    import sims.geometry.Vector2D
+    class Twice(val world: World) extends Detector:
+      private var found = Vector.empty[Collision]
+      def collisions = found
+      def detect(): Unit =
+        val circles = world.shapes.collect { case c: Circle => c }
+        found = Vector(CircleCollision(circles(0), circles(1)), CircleCollision(circles(0), circles(1)))
+    val world = World(Twice(_))
+    world.gravity = Vector2D.Null
+    world.solver = sims.solver.SoftStep()
+    val a = Circle(0.1, 1)
+    val b = Circle(0.1, 1)
+    b.pos = Vector2D(0.15, 0)
+    world += a.asBody
+    world += b.asBody
+    world.step()
+    val table = world.workspace(classOf[SoftWorkspace], SoftWorkspace()).table
+    assert(table.committed.count == 2 && table.committed.pairsRepeat)
+    table.begin()
+    assert(table.lastOf(table.committed.keys(0)) == 1)
   }
