@@ -292,6 +292,7 @@ private[io] object WorldReader:
       table.bodyA(c) = a.body.index
       table.bodyB(c) = b.body.index
       table.keys(c) = PairKey.of(a, b)
+      table.reportsEvents(c) = a.enableContactEvents && b.enableContactEvents
       table.ids(2 * c) = in.readInt()
       table.ids(2 * c + 1) = in.readInt()
       table.side(c) = in.readInt()

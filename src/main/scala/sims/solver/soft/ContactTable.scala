@@ -8,7 +8,7 @@ import sims.dynamics.Shape
   *
   * Two generations are kept: the committed one (the last step's contacts, with the impulses
   * they ended with) and the one being built for this step. A new contact finds the last
-  * step's record of the same shape pair through a table keyed by the pair (never by position
+  * step's record of the same shape pair through an index by the pair (never by position
   * in a list: [[sims.collision.PairKey]]), and each new point takes over the impulses of the old point with the same
   * feature id (warm starting). `commit()` makes the new generation the last step's; a step
   * that fails before it leaves the committed one as it was.
@@ -315,6 +315,8 @@ private[sims] final class Contacts:
   var pointCount: Array[Int] = new Array[Int](16)
   var ids: Array[Int] = new Array[Int](32)
   var side: Array[Int] = new Array[Int](16)
+  /** Per contact, whether both its shapes' contact events were on when it was made. */
+  var reportsEvents: Array[Boolean] = new Array[Boolean](16)
   var offset: Array[Int] = new Array[Int](16)
   var coldOffset: Array[Int] = new Array[Int](16)
   var hot: Array[Double] = new Array[Double](16 * (Header + HotPoint))
@@ -394,6 +396,7 @@ private[sims] final class Contacts:
     System.arraycopy(from.bodyA, 0, bodyA, base, n); System.arraycopy(from.bodyB, 0, bodyB, base, n)
     System.arraycopy(from.keys, 0, keys, base, n); System.arraycopy(from.pointCount, 0, pointCount, base, n)
     System.arraycopy(from.ids, 0, ids, 2 * base, 2 * n); System.arraycopy(from.side, 0, side, base, n)
+    System.arraycopy(from.reportsEvents, 0, reportsEvents, base, n)
     System.arraycopy(from.offset, 0, offset, base, n); System.arraycopy(from.coldOffset, 0, coldOffset, base, n)
     System.arraycopy(from.records, 0, records, base * RecordStride, n * RecordStride)
 
@@ -427,7 +430,7 @@ private[sims] final class Contacts:
     System.arraycopy(shapeA, 0, c.shapeA, 0, count); System.arraycopy(shapeB, 0, c.shapeB, 0, count)
     System.arraycopy(bodyA, 0, c.bodyA, 0, count); System.arraycopy(bodyB, 0, c.bodyB, 0, count)
     System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(ids, 0, c.ids, 0, 2 * count)
-    System.arraycopy(side, 0, c.side, 0, count)
+    System.arraycopy(side, 0, c.side, 0, count); System.arraycopy(reportsEvents, 0, c.reportsEvents, 0, count)
     System.arraycopy(records, 0, c.records, 0, count * RecordStride)
     var n = 0
     while n < count do
@@ -442,6 +445,7 @@ private[sims] final class Contacts:
     bodyA = java.util.Arrays.copyOf(bodyA, capacity); bodyB = java.util.Arrays.copyOf(bodyB, capacity)
     keys = java.util.Arrays.copyOf(keys, capacity); pointCount = java.util.Arrays.copyOf(pointCount, capacity)
     ids = java.util.Arrays.copyOf(ids, 2 * capacity); side = java.util.Arrays.copyOf(side, capacity)
+    reportsEvents = java.util.Arrays.copyOf(reportsEvents, capacity)
     offset = java.util.Arrays.copyOf(offset, capacity)
     coldOffset = java.util.Arrays.copyOf(coldOffset, capacity)
     records = java.util.Arrays.copyOf(records, capacity * RecordStride)

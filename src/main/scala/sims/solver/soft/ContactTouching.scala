@@ -67,14 +67,18 @@ private[sims] object ContactTouching:
       c += 1
 
   /** Reports the touching contacts of `contacts`, as `measure` found them, to `tracker`, in
-    * contact order.
+    * contact order (those of a shape whose contact events were off when the contact was made
+    * left out).
     */
   def report(contacts: Contacts, tracker: PairTracker, points: Array[Int], sums: Array[Double]): Unit =
     val hot = contacts.hot
     var c = 0
     while c < contacts.count do
       val touching = points(c)
-      if touching > 0 && tracker.touch(contacts.shapeA(c), contacts.shapeB(c)) then
+      // The pair's key and whether its events are on, from the contact: no shape read unless it begins.
+      if touching > 0 && contacts.reportsEvents(c) && tracker.touchKey(contacts.keys(c), contacts.shapeA(c),
+          contacts.shapeB(c))
+      then
         val k = contacts.offset(c)
         val t = SumStride * c
         tracker.describe(hot(k + NormalX), hot(k + NormalY), sums(t) / touching, sums(t + 1) / touching, sums(t + 2),

@@ -393,6 +393,7 @@ private[sims] final class PairCollider:
     contacts.bodyA(c) = a.body.index
     contacts.bodyB(c) = b.body.index
     contacts.keys(c) = key
+    contacts.reportsEvents(c) = a.enableContactEvents && b.enableContactEvents
     val k = contacts.offset(c)
     contacts.hot(k + NormalX) = nx
     contacts.hot(k + NormalY) = ny
