@@ -230,13 +230,10 @@ private[sims] final class ContactFinder:
     // Each range's blocks in a region of the step's arrays with room for a contact of two points
     // per pair (a pair makes one contact at most): gathering the ranges then copies no block.
     val target = table.current
-    target.reserve(items * ContactFinder.MaxHot, items * ContactTable.ColdStride)
+    target.reserve(items)
     var r = 0
     while r < count do
-      val pairsBefore = from(r)
-      val pairsAfter = from(r + 1)
-      stages(r).share(target, target.hotSize + pairsBefore * ContactFinder.MaxHot, target.hotSize + pairsAfter * ContactFinder.MaxHot,
-        target.coldSize + pairsBefore * ContactTable.ColdStride, target.coldSize + pairsAfter * ContactTable.ColdStride)
+      stages(r).share(target, from(r), from(r + 1))
       colliders(r).begin(world, table, bodies, stages(r), speculativeDistance, linearSlop, persistence, shared = true)
       failures(r) = null
       r += 1
@@ -261,7 +258,7 @@ private[sims] final class ContactFinder:
         more += stages(r).count
         if stages(r).bouncing then current.bouncing = true
         r += 1
-      current.extend(more, current.hotSize + items * ContactFinder.MaxHot, current.coldSize + items * ContactTable.ColdStride)
+      current.extend(more, items)
       workers.run(count, placeTask)
       current = null
       true
@@ -296,8 +293,5 @@ private[sims] final class ContactFinder:
   override def toString: String = s"ContactFinder(ranges = ${colliders.length})"
 
 private object ContactFinder:
-  /** The most hot doubles one contact takes: two points. */
-  inline val MaxHot = ContactTable.Header + 2 * ContactTable.HotPoint
-
   /** Ranges of pairs per worker in a shared stage: a worker that starts late finds work left. */
   inline val RangesPerWorker = 4

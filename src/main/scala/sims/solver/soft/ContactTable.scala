@@ -208,6 +208,8 @@ private[sims] object ContactTable:
   inline val TangentImpulse = 8
   inline val TotalNormalImpulse = 9 // the normal impulse applied over the step: its substeps and restitution
   inline val HotPoint = 10
+  /** The most hot doubles one contact takes: two points. */
+  inline val MostHot = Header + 2 * HotPoint
 
   // A contact's record in `Contacts.records`, at `c * RecordStride`: what the passes need only
   // for bouncing contacts, and what the step's preparation and end read.
@@ -356,35 +358,40 @@ private[sims] final class Contacts:
     count += 1
     count - 1
 
-  /** Makes room for `hotDoubles` more doubles in `hot` and `coldDoubles` in `cold` after those in
-    * use (the regions `share` hands out), keeping the present ones.
+  // Pairs p of a shared stage have their room for a contact (two points at most) at
+  // `hotSize + p * MostHot` and `coldSize + p * ColdStride`, after the blocks in use.
+  private inline def hotRoom(pair: Int): Int = hotSize + pair * MostHot
+  private inline def coldRoom(pair: Int): Int = coldSize + pair * ColdStride
+
+  /** Makes room for a contact of each of `pairs` pairs after the blocks in use, keeping them:
+    * the regions `share` hands out.
     */
-  def reserve(hotDoubles: Int, coldDoubles: Int): Unit =
-    if hotSize + hotDoubles > hot.length then hot = java.util.Arrays.copyOf(hot, 2 * (hotSize + hotDoubles))
-    if coldSize + coldDoubles > cold.length then cold = java.util.Arrays.copyOf(cold, 2 * (coldSize + coldDoubles))
+  def reserve(pairs: Int): Unit =
+    if hotRoom(pairs) > hot.length then hot = java.util.Arrays.copyOf(hot, 2 * hotRoom(pairs))
+    if coldRoom(pairs) > cold.length then cold = java.util.Arrays.copyOf(cold, 2 * coldRoom(pairs))
 
   /** Empties this generation and makes it write its contacts' hot and cold blocks into `into`'s
-    * arrays, from `hotStart` and `coldStart` on, never past `hotEnd` and `coldEnd` (room made by
-    * `into.reserve`): a range of pairs collided on its own thread, its blocks where the step's
-    * passes will read them. Gathered with `into.place`.
+    * arrays, in the room of pairs `firstPair` until `endPair` (made by `into.reserve`), never past
+    * it: a range of pairs collided on its own thread, its blocks where the step's passes will read
+    * them. Gathered with `into.place`.
     */
-  def share(into: Contacts, hotStart: Int, hotEnd: Int, coldStart: Int, coldEnd: Int): Unit =
+  def share(into: Contacts, firstPair: Int, endPair: Int): Unit =
     clear()
     hot = into.hot
     cold = into.cold
-    hotSize = hotStart
-    coldSize = coldStart
-    hotLimit = hotEnd
-    coldLimit = coldEnd
+    hotSize = into.hotRoom(firstPair)
+    coldSize = into.coldRoom(firstPair)
+    hotLimit = into.hotRoom(endPair)
+    coldLimit = into.coldRoom(endPair)
 
   /** Counts `more` contacts as added after the present ones, their slots to be filled by `place`,
-    * and the blocks in use up to `hotEnd` and `coldEnd`.
+    * and the room of `pairs` pairs (see `reserve`) as in use.
     */
-  def extend(more: Int, hotEnd: Int, coldEnd: Int): Unit =
+  def extend(more: Int, pairs: Int): Unit =
     if count + more > keys.length then grow(2 * (count + more))
     count += more
-    hotSize = hotEnd
-    coldSize = coldEnd
+    hotSize = hotRoom(pairs)
+    coldSize = coldRoom(pairs)
 
   /** Copies every contact of `from` (but its `bouncing`) to contacts `base` on: room made by
     * `extend`, their hot and cold blocks already in this generation's arrays (see `share`). Writes

@@ -133,18 +133,17 @@ class ContactTableSpec extends AnyFunSuite:
     // Two ranges of pairs (4 and 3), each with room for a two-point contact per pair; the
     // second range makes one contact fewer than it has pairs, which leaves a gap.
     val gathered = Contacts()
-    val maxHot = Header + 2 * HotPoint
-    gathered.reserve(8 * maxHot, 8 * ColdStride)
+    gathered.reserve(8)
     val ranges = Seq(Contacts(), Contacts())
-    ranges(0).share(gathered, 0, 4 * maxHot, 0, 4 * ColdStride)
-    ranges(1).share(gathered, 4 * maxHot, 8 * maxHot, 4 * ColdStride, 8 * ColdStride)
+    ranges(0).share(gathered, 0, 4)
+    ranges(1).share(gathered, 4, 8)
     for (p, n) <- points.zipWithIndex do
       val range = ranges(if n < 4 then 0 else 1)
       fill(range, range.add(p), n)
-    gathered.extend(7, 8 * maxHot, 8 * ColdStride)
+    gathered.extend(7, 8)
     gathered.place(ranges(0), 0)
     gathered.place(ranges(1), 4)
-    assert(ranges(1).offset(0) == 4 * maxHot)
+    assert(ranges(1).offset(0) == 4 * MostHot)
     for copy <- Seq(gathered, gathered.copy()) do
       assert(copy.count == 7)
       for c <- 0 until 7 do
@@ -161,9 +160,9 @@ class ContactTableSpec extends AnyFunSuite:
   test("a range that would outgrow its shared region is refused, naming the region") {
     val gathered = Contacts()
     val range = Contacts()
-    gathered.reserve(2 * ContactTable.Header + 2 * ContactTable.HotPoint, 2 * ContactTable.ColdStride)
-    range.share(gathered, 0, ContactTable.Header + ContactTable.HotPoint, 0, 2 * ContactTable.ColdStride)
-    range.add(1)
+    gathered.reserve(1)
+    range.share(gathered, 0, 1)
+    range.add(2) // a two-point contact fills a pair's room
     val error = intercept[IllegalStateException](range.add(1))
     assert(error.getMessage.contains("outgrew its region"))
   }
