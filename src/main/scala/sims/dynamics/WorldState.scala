@@ -130,7 +130,7 @@ final class WorldState private ():
     if joints.length != js.length then joints = new Array(js.length)
     var i = 0
     while i < js.length do
-      joints(i) = js(i)
+      if joints(i) ne js(i) then joints(i) = js(i) // no write barrier for last step's joint
       i += 1
 
 private[sims] object WorldState:

@@ -16,9 +16,11 @@ private[sims] final class JointRows:
 
   /** Points the rows at `jacobians(base until base + 12)` and `errors(errorBase until errorBase + 2)`. */
   def target(jacobians: Array[Double], base: Int, errors: Array[Double], errorBase: Int): Unit =
-    this.jacobians = jacobians
+    // A reference stored costs the garbage collector's write barrier: only when it changes (the
+    // direct solver points every joint of a pass at the same arrays).
+    if this.jacobians ne jacobians then this.jacobians = jacobians
+    if this.errors ne errors then this.errors = errors
     this.base = base
-    this.errors = errors
     this.errorBase = errorBase
 
   /** Sets row r: body 1's entries, body 2's entries and the error. */

@@ -33,13 +33,27 @@ private[sims] final class SoftJoints:
   private var stamp = 0
   // The impulses at the start of the step under way (`beginStep`), for `undoStep`.
   private var startImpulses = new Array[Double](0)
+  // The world's revision when the lists were last sorted with no body asleep, or -1: while the
+  // joints and the bodies' indices stay the same and no body sleeps, the lists stay as they are.
+  private var sortedRevision = -1L
 
   /** Sorts the world's joints for this step: force joints, joint trees (when `direct`) and the
     * constraints solved iteratively.
     */
   def sort(world: World, bodies: SoftBodies, direct: Boolean): Unit =
     val joints = world.jointList
-    if !sameJoints(joints) then learn(joints)
+    val same = sameJoints(joints)
+    if !same then learn(joints)
+    if same && !bodies.anyAsleep && sortedRevision == world.revision then sortTrees(bodies, direct)
+    else
+      sortLists(world, bodies)
+      sortedRevision = if bodies.anyAsleep then -1L else world.revision
+      sortTrees(bodies, direct)
+
+  private def sortTrees(bodies: SoftBodies, direct: Boolean): Unit =
+    if direct then trees.build(constraints, bodies) else trees.keepIterative(constraints)
+
+  private def sortLists(world: World, bodies: SoftBodies): Unit =
     constraints.clear()
     forceJoints.clear()
     forceBodies.clear()
@@ -57,7 +71,6 @@ private[sims] final class SoftJoints:
         markForceBody(j.node1.index)
         markForceBody(j.node2.index)
       i += 1
-    if direct then trees.build(constraints, bodies) else trees.keepIterative(constraints)
 
   /** Whether a joint between bodies a and b rests: neither moves this step (each asleep or
     * fixed) and one of them sleeps. A body outside the world (index -1) never rests.
