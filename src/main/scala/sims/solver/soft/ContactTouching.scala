@@ -16,71 +16,83 @@ import sims.solver.soft.SoftBodies.*
   * the point pushed, the impact's) and the normal impulse its points applied over the step.
   */
 private[sims] object ContactTouching:
-  /** Doubles per contact in `measure`'s sums. */
-  inline val SumStride = 4
-
-  /** Measures contacts `from until until` of `contacts` (this step's, after restitution): per
-    * contact c, its touching points in `points(c)` and, at `SumStride * c` in `sums`, the sums of
-    * their x and y, their fastest approach and the contact's normal impulse. Writes only those
-    * contacts' slots: ranges of contacts may be measured at once.
+  /** Counts, for contacts `from until until` of `contacts` (this step's, after restitution), the
+    * touching points of each contact c into `points(c)`. Writes only those contacts' slots:
+    * ranges of contacts may be measured at once. What describes a pair is worked out by `report`
+    * for the pairs that begin alone: most touching pairs go on touching.
     */
-  def measure(contacts: Contacts, bodies: SoftBodies, points: Array[Int], sums: Array[Double], from: Int,
-      until: Int): Unit =
+  def measure(contacts: Contacts, bodies: SoftBodies, points: Array[Int], from: Int, until: Int): Unit =
     val hot = contacts.hot
     val state = bodies.state
     var c = from
     while c < until do
-      val a = contacts.bodyA(c)
-      val b = contacts.bodyB(c)
-      val sA = a * SoftBodies.Stride
-      val sB = b * SoftBodies.Stride
+      val sA = contacts.bodyA(c) * SoftBodies.Stride
+      val sB = contacts.bodyB(c) * SoftBodies.Stride
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       var touching = 0
-      var sumX, sumY = 0.0
-      var fastest = 0.0
-      var impulse = 0.0
       var p = 0
       while p < contacts.pointCount(c) do
         val q = contacts.hotPoint(c, p)
-        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-        val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-        // The arms turned by each body's turn since the start of the step.
-        val armAX = state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy
-        val armAY = state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy
-        val armBX = state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy
-        val armBY = state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy
-        val gapX = state(sB + ShiftX) - state(sA + ShiftX) + armBX - armAX
-        val gapY = state(sB + ShiftY) - state(sA + ShiftY) + armBY - armAY
-        val separation = gapX * nx + gapY * ny + hot(q + BaseSeparation)
-        val pushed = hot(q + TotalNormalImpulse)
-        if separation <= 0 || pushed > 0 then
-          touching += 1
-          sumX += bodies.startX(a) + state(sA + ShiftX) + armAX
-          sumY += bodies.startY(a) + state(sA + ShiftY) + armAY
-          fastest = math.max(fastest, -contacts.records(contacts.recordPoint(c, p) + RelativeVelocity))
-        impulse += pushed
+        if hot(q + TotalNormalImpulse) > 0 || separation(hot, q, state, sA, sB, nx, ny) <= 0 then touching += 1
         p += 1
       points(c) = touching
-      val t = SumStride * c
-      sums(t) = sumX; sums(t + 1) = sumY; sums(t + 2) = fastest; sums(t + 3) = impulse
       c += 1
 
-  /** Reports the touching contacts of `contacts`, as `measure` found them, to `tracker`, in
-    * contact order (those of a shape whose contact events were off when the contact was made
-    * left out).
+  /** The separation of the point at q at the end of the step: its arms turned by each body's turn
+    * since the start of the step (state at sA and sB), the bodies' displacement along the normal.
     */
-  def report(contacts: Contacts, tracker: PairTracker, points: Array[Int], sums: Array[Double]): Unit =
-    val hot = contacts.hot
+  private inline def separation(hot: Array[Double], q: Int, state: Array[Double], sA: Int, sB: Int, nx: Double,
+      ny: Double): Double =
+    val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+    val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
+    val armAX = state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy
+    val armAY = state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy
+    val armBX = state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy
+    val armBY = state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy
+    val gapX = state(sB + ShiftX) - state(sA + ShiftX) + armBX - armAX
+    val gapY = state(sB + ShiftY) - state(sA + ShiftY) + armBY - armAY
+    gapX * nx + gapY * ny + hot(q + BaseSeparation)
+
+  /** Reports the touching contacts of `contacts`, as `measure` counted them, to `tracker`, in
+    * contact order (those of a shape whose contact events were off when the contact was made
+    * left out), describing each pair that begins.
+    */
+  def report(contacts: Contacts, bodies: SoftBodies, tracker: PairTracker, points: Array[Int]): Unit =
     var c = 0
     while c < contacts.count do
-      val touching = points(c)
       // The pair's key and whether its events are on, from the contact: no shape read unless it begins.
-      if touching > 0 && contacts.reportsEvents(c) && tracker.touchKey(contacts.keys(c), contacts.shapeA(c),
+      if points(c) > 0 && contacts.reportsEvents(c) && tracker.touchKey(contacts.keys(c), contacts.shapeA(c),
           contacts.shapeB(c))
-      then
-        val k = contacts.offset(c)
-        val t = SumStride * c
-        tracker.describe(hot(k + NormalX), hot(k + NormalY), sums(t) / touching, sums(t + 1) / touching, sums(t + 2),
-          sums(t + 3))
+      then describe(contacts, bodies, tracker, c)
       c += 1
+
+  /** Describes contact c's pair, which begins, to `tracker`: its normal, the middle of its
+    * touching points (where they are at the end of the step), their fastest approach and the
+    * normal impulse of all its points.
+    */
+  private def describe(contacts: Contacts, bodies: SoftBodies, tracker: PairTracker, c: Int): Unit =
+    val hot = contacts.hot
+    val state = bodies.state
+    val a = contacts.bodyA(c)
+    val sA = a * SoftBodies.Stride
+    val sB = contacts.bodyB(c) * SoftBodies.Stride
+    val k = contacts.offset(c)
+    val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+    var touching = 0
+    var sumX, sumY = 0.0
+    var fastest = 0.0
+    var impulse = 0.0
+    var p = 0
+    while p < contacts.pointCount(c) do
+      val q = contacts.hotPoint(c, p)
+      val pushed = hot(q + TotalNormalImpulse)
+      if separation(hot, q, state, sA, sB, nx, ny) <= 0 || pushed > 0 then
+        touching += 1
+        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
+        sumX += bodies.startX(a) + state(sA + ShiftX) + (state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy)
+        sumY += bodies.startY(a) + state(sA + ShiftY) + (state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy)
+        fastest = math.max(fastest, -contacts.records(contacts.recordPoint(c, p) + RelativeVelocity))
+      impulse += pushed
+      p += 1
+    tracker.describe(nx, ny, sumX / touching, sumY / touching, fastest, impulse)

@@ -61,7 +61,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     index match
       case 0 =>
         if world.enableContactEvents then
-          ContactTouching.report(workspace.table.current, world.contactTracker, touchingPoints, touchingSums)
+          ContactTouching.report(workspace.table.current, workspace.bodies, world.contactTracker, touchingPoints)
       case 1 => workspace.table.indexCurrent()
       case _ => if readyToSleep then workspace.islands.sleep(world, workspace.bodies, workspace.table.current, world.jointList)
 
@@ -74,13 +74,11 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
   // Whether a body of the step's `finish` has rested long enough to sleep.
   private var readyToSleep = false
 
-  // Per contact: its touching points, and its sums for the contact events (see ContactTouching).
+  // Per contact: its touching points, for the contact events (see ContactTouching).
   private var touchingPoints = new Array[Int](0)
-  private var touchingSums = new Array[Double](0)
 
   private val touchingTask: Workers.Task = index =>
-    ContactTouching.measure(workspace.table.current, workspace.bodies, touchingPoints, touchingSums, from(index),
-      from(index + 1))
+    ContactTouching.measure(workspace.table.current, workspace.bodies, touchingPoints, from(index), from(index + 1))
 
   /** Prepares this step's contacts (inverse masses, effective masses, softness), then cuts them
     * into blocks, under gravity `(gx, gy)`.
@@ -120,9 +118,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     */
   private def measureTouching(workers: Workers): Unit =
     val contacts = workspace.table.current
-    if touchingPoints.length < contacts.count then
-      touchingPoints = new Array[Int](2 * contacts.count)
-      touchingSums = new Array[Double](2 * ContactTouching.SumStride * contacts.count)
+    if touchingPoints.length < contacts.count then touchingPoints = new Array[Int](2 * contacts.count)
     inRanges(workers, contacts.count, touchingTask)
 
   /** Takes the state of the bodies of `list` at the start of a step of substeps `h`, in ranges,
