@@ -191,6 +191,32 @@ class ContactEventsSpec extends AnyFunSuite with Matchers:
       events() shouldBe first
     }
 
+  for restitution <- Seq(0.0, 0.5) do
+    test(s"SoftStep: a speculative contact that never pushes does not begin; landing begins (restitution $restitution)") {
+      // The step's last relax pass counts the touching points of the contacts it solves; a
+      // bounce has restitution change the impulses after it, and then the contacts are measured
+      // again at the step's end: both must leave a hovering pair out and a landed one in.
+      val (world, ground) = withGround(SoftStep())
+      world.gravity = Vector2D.Null
+      world.enableSleep = false // hovering at rest, they would fall asleep before gravity comes on
+      ground.restitution = restitution
+      val ball = Circle(0.2, 1)
+      ball.pos = Vector2D(-1, 0.21) // 1 cm above the ground: a speculative point, one
+      val box = Rectangle(0.25, 0.25, 1)
+      box.pos = Vector2D(1, 0.26) // and two
+      for shape <- Seq(ball, box) do
+        shape.restitution = 1.0
+        world += shape.asBody
+      val hovering = record(world, 60)
+      SoftStep().contacts(world).size shouldBe 2
+      hovering.begins shouldBe empty
+      world.contactEvents.touching shouldBe empty
+      world.gravity = Vector2D(0, -9.81)
+      val landing = record(world, 60)
+      landing.begins.map(b => (b._2, b._3)).head shouldBe ((ground, ball))
+      landing.begins.map(b => (b._2, b._3)).toSet shouldBe Set((ground, ball), (ground, box))
+    }
+
   test("switching solvers keeps a resting pair touching: no end, no begin again") {
     val (world, ground) = withGround(ClassicStep)
     val box = Rectangle(0.25, 0.25, 1)
