@@ -46,13 +46,14 @@ trait StepGuard:
   /** Fails unless every joint's bodies are in the world and the solver can step every joint. */
   protected def checkJoints(): Unit =
     val joints = jointList
+    val interval = solver.forceInterval(this) // the same for every joint
     var i = 0
     while i < joints.length do
       val j = joints(i)
       if !j.bodiesIn(this) then
         throw IllegalArgumentException(s"joint $j connects a body that is not in this world")
       // The time step or the masses may have changed since the joint joined.
-      forceIntervalProblem(j).foreach(problem => throw IllegalStateException(problem))
+      j.forceIntervalProblem(interval, solver).foreach(problem => throw IllegalStateException(problem))
       // A joint given a soft-step feature after it joined a classic world.
       this.classicProblem(j).foreach(problem => throw IllegalStateException(problem))
       i += 1

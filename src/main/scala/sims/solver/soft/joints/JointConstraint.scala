@@ -14,6 +14,8 @@ import sims.solver.soft.SoftContext
   * @param rows the number of rows of the constraint: its accumulated impulses, one per row
   */
 private[sims] abstract class JointConstraint(val joint: Joint, rows: Int):
+  require(rows <= JointConstraint.MaxRows, s"a joint constraint has at most ${JointConstraint.MaxRows} rows, not $rows")
+
   /** The impulses accumulated so far, one per row: carried to the next step (warm starting). */
   val impulse: Array[Double] = new Array[Double](rows)
 
@@ -52,6 +54,9 @@ private[sims] abstract class JointConstraint(val joint: Joint, rows: Int):
 
 /** The soft step's table of joint kinds. */
 private[sims] object JointConstraint:
+  /** The most rows a constraint has (a revolute or prismatic joint's: point, limit, motor). */
+  inline val MaxRows = 6
+
   /** The soft constraint of `joint`, or null for a force joint (a spring: its forces are applied
     * in every substep instead). A joint of a kind the table does not know (a user's own) is
     * solved by its classic velocity correction ([[ClassicConstraint]]).

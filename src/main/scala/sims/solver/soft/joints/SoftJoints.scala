@@ -150,22 +150,20 @@ private[sims] final class SoftJoints:
 
   /** Marks the start of a step: the impulses of the joints known now, for `undoStep`. */
   def beginStep(): Unit =
+    // A joint has at most MaxRows impulses: room for every one without counting them first.
+    if startImpulses.length < JointConstraint.MaxRows * knownCount then
+      startImpulses = new Array[Double](2 * JointConstraint.MaxRows * knownCount)
+    val list = startConstraints(knownCount)
     var total = 0
     var i = 0
-    while i < knownCount do
-      if knownConstraints(i) != null then total += knownConstraints(i).impulse.length
-      i += 1
-    if startImpulses.length < total then startImpulses = new Array[Double](2 * total)
-    total = 0
-    i = 0
     while i < knownCount do
       val c = knownConstraints(i)
       if c != null then
         ShortCopy.doubles(c.impulse, 0, startImpulses, total, c.impulse.length)
         total += c.impulse.length
+      if list(i) ne c then list(i) = c // no write barrier for last step's constraint
       i += 1
     startCount = knownCount
-    System.arraycopy(knownConstraints, 0, startConstraints(knownCount), 0, knownCount)
 
   // The constraints `beginStep` saved the impulses of, in order.
   private var startList = new Array[JointConstraint](0)
