@@ -25,6 +25,10 @@ private[sims] final class DistanceConstraint(distanceJoint: DistanceJoint) exten
     arm1.update()
     arm2.update()
     ends.start(bodies, distanceJoint.node1.index, distanceJoint.node2.index, arm1.armX, arm1.armY, arm2.armX, arm2.armY)
+    // A joint tree takes its rows from `rowsAt`: the axial mass is `solve`'s alone.
+    if !inTree then prepareAxialMass(bodies)
+
+  private def prepareAxialMass(bodies: SoftBodies): Unit =
     measure(bodies)
     val cr1 = ends.arm1X * axisY - ends.arm1Y * axisX
     val cr2 = ends.arm2X * axisY - ends.arm2Y * axisX

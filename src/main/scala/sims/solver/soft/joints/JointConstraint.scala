@@ -19,6 +19,11 @@ private[sims] abstract class JointConstraint(val joint: Joint, rows: Int):
   /** The impulses accumulated so far, one per row: carried to the next step (warm starting). */
   val impulse: Array[Double] = new Array[Double](rows)
 
+  /** Whether this step solves the constraint's rows in a joint tree (set before `prepare`): then
+    * `solve` is not called, and `prepare` may leave out what only `solve` reads.
+    */
+  var inTree: Boolean = false
+
   /** Takes what stays fixed during the step, with the bodies at their placements at its start. */
   def prepare(context: SoftContext): Unit
 

@@ -177,9 +177,9 @@ private[sims] final class JointTrees:
       val a = moving(constraint.joint.node1, bodies)
       val b = moving(constraint.joint.node2, bodies)
       val some = if a >= 0 then a else b
-      if constraint.directRows > 0 && some >= 0 && bodyJoints(find(some)) == 1 && groundJoints(find(some)) <= 1 then
-        direct += constraint
-      else iterative += constraint
+      constraint.inTree =
+        constraint.directRows > 0 && some >= 0 && bodyJoints(find(some)) == 1 && groundJoints(find(some)) <= 1
+      if constraint.inTree then direct += constraint else iterative += constraint
       j += 1
 
   /** Leaves every joint to the iterative solver. */
@@ -187,6 +187,8 @@ private[sims] final class JointTrees:
     direct.clear()
     iterative.clear()
     iterative ++= joints
+    var j = 0
+    while j < joints.length do { joints(j).inTree = false; j += 1 }
     nodeCount = 0
     treeCount = 0
     laidOutCount = -1
