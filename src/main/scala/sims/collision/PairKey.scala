@@ -8,7 +8,7 @@ import sims.dynamics.Shape
   */
 private[sims] object PairKey:
   /** The key of the pair (first, second). */
-  def of(first: Shape, second: Shape): Long = (first.worldIndex.toLong << 32) | (second.worldIndex.toLong & 0xffffffffL)
+  inline def of(first: Shape, second: Shape): Long = (first.worldIndex.toLong << 32) | (second.worldIndex.toLong & 0xffffffffL)
 
   /** How far from its starting place `near` looks, each way. */
   inline val NearReach = 32

@@ -39,6 +39,13 @@ object Workers:
 
     override def toString: String = "Workers.Serial"
 
+  /** Where range `index` (0 to `ranges`) starts when `items` items are cut into `ranges` ranges of
+    * about equal size: items * index / ranges, in Int arithmetic when the product fits (on
+    * Scala.js a Long's division allocates).
+    */
+  private[sims] def rangeStart(items: Int, ranges: Int, index: Int): Int =
+    if items <= Int.MaxValue / ranges then items * index / ranges else (items.toLong * index / ranges).toInt
+
   /** The processors the platform offers (1 on Scala.js, which has one thread). */
   def available: Int = WorkersPlatform.available
 

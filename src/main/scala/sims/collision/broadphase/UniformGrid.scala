@@ -46,7 +46,8 @@ private[sims] final class UniformGrid extends Broadphase:
   private var fineX0, fineY0, fineX1, fineY1 = new Array[Int](0)
   // Coarse cells as Longs: floor(coordinate / gridSide) is exact in a Long for any coordinate
   // up to 1.8e19 gridSides, so far from the origin pairs keep SiMS's order (in an Int it
-  // saturates beyond 2^31 cells, 4.3e9 m with 2 m cells).
+  // saturates beyond 2^31 cells, 4.3e9 m with 2 m cells). Only the coarse grid's order reads
+  // them: `findPairs` fills them when it sorts (on Scala.js a Double to Long allocates).
   private var coarseX0, coarseY0 = new Array[Long](0)
   private val wide = ArrayBuffer.empty[Int]
   private val large = ArrayBuffer.empty[Int]
@@ -122,10 +123,9 @@ private[sims] final class UniformGrid extends Broadphase:
         val x0 = s.minX - reach; val y0 = s.minY - reach
         val x1 = s.maxX + reach; val y1 = s.maxY + reach
         boxMinX(i) = x0; boxMinY(i) = y0; boxMaxX(i) = x1; boxMaxY(i) = y1
-        coarseX0(i) = cell(x0, side)
-        coarseY0(i) = cell(y0, side)
         placement(i) =
-          if (cell(x1, side).toDouble - coarseX0(i) + 1) * (cell(y1, side).toDouble - coarseY0(i) + 1) > Defaults.LargeShapeCells
+          if (cellIndex(x1, side) - cellIndex(x0, side) + 1) * (cellIndex(y1, side) - cellIndex(y0, side) + 1) >
+              Defaults.LargeShapeCells
           then Large
           else Fine
       i += 1
@@ -189,6 +189,11 @@ private[sims] final class UniformGrid extends Broadphase:
     resetGrid()
     val side = _gridSide
     var i = 0
+    while sorted && i < count do
+      coarseX0(i) = cell(boxMinX(i), side)
+      coarseY0(i) = cell(boxMinY(i), side)
+      i += 1
+    i = 0
     while i < count do
       val p = placement(i)
       if p == Fine || p == Wide then
@@ -631,7 +636,17 @@ private[sims] object UniformGrid:
     else if p >= min && p <= max then Double.PositiveInfinity else Double.NegativeInfinity
 
   /** Grid cell index of a coordinate: floor(coordinate / side) (clamped to the Long range). */
-  private[sims] def cell(coordinate: Double, side: Double): Long = math.floor(coordinate / side).toLong
+  private[sims] inline def cell(coordinate: Double, side: Double): Long = math.floor(coordinate / side).toLong
+
+  /** `cell(coordinate, side).toDouble`, without the Long: floor(coordinate / side) clamped to
+    * the Long range, NaN to 0.
+    */
+  private inline def cellIndex(coordinate: Double, side: Double): Double =
+    val c = math.floor(coordinate / side)
+    if c != c then 0.0 else if c < LongLimit then (if c > -LongLimit then c else -LongLimit) else LongLimit
+
+  /** 2^63: Long.MaxValue as a Double, and minus Long.MinValue. */
+  private val LongLimit = 9.223372036854775807e18
 
   /** Cell of the internal fine grid: floor(coordinate * perSide), clamped to the Int range. */
   private inline def fineCell(coordinate: Double, perSide: Double): Int =

@@ -99,7 +99,7 @@ private[sims] final class ContactBlocks:
       finally splitting = null
 
   // Where range r of the split under way starts.
-  private def from(r: Int): Int = (items.toLong * r / ranges).toInt
+  private def from(r: Int): Int = sims.solver.Workers.rangeStart(items, ranges, r)
 
   /** Gives contacts `from` until `until` of the split their blocks, and counts them by block at
     * `filled(row + block)`.

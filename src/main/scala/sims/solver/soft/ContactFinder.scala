@@ -264,7 +264,7 @@ private[sims] final class ContactFinder:
       true
 
   // Where range `index` of the shared stage under way starts.
-  private def from(index: Int): Int = (items.toLong * index / ranges).toInt
+  private def from(index: Int): Int = Workers.rangeStart(items, ranges, index)
 
   /** Wakes the sleeping islands that touched, at the last step, a fixed body the user placed
     * since: it may have moved away from them (they would hang in the air) or into them.

@@ -230,7 +230,7 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     workers.run(ranges, task)
 
   // Where range `index` of the stage under way starts.
-  private def from(index: Int): Int = (items.toLong * index / ranges).toInt
+  private def from(index: Int): Int = Workers.rangeStart(items, ranges, index)
 
   // v += h (g + F/m), w += h tau/I for the moving bodies from until until.
   private def integrateVelocities(from: Int, until: Int): Unit =
