@@ -1,7 +1,7 @@
 package sims.solver.soft
 
 import sims.collision.{Collision, PairKey}
-import sims.collision.manifold.Manifold
+import sims.collision.manifold.{CircleManifold, Manifold}
 import sims.collision.narrowphase.{Narrowphase, PairKind, RecentMethods}
 import sims.dynamics.{Circle, Shape, World}
 import sims.geometry.PortableMath
@@ -88,13 +88,15 @@ private[sims] final class PairCollider:
     else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
       keeps(table.committed, last, a, b) then
       keep(last, a, b, key)
+    else if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
+      val circleA = a.asInstanceOf[Circle]
+      val circleB = b.asInstanceOf[Circle]
+      CircleManifold.collide(circleA, circleB, speculativeDistance + timeStep * approach, manifold)
+      if manifold.pointCount > 0 then addCircles(circleA, circleB, key, last)
     else
       functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
         speculativeDistance + timeStep * approach, linearSlop, manifold)
-      if manifold.pointCount > 0 then
-        addManifold(a, b, key, last)
-        if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
-          aimAtImpact(target, target.count - 1, a.asInstanceOf[Circle], b.asInstanceOf[Circle])
+      if manifold.pointCount > 0 then addManifold(a, b, key, last)
 
   /** Whether shapes a and b touch as the soft step counts it: their manifold has a point. */
   def touches(a: Shape, b: Shape): Boolean =
@@ -164,33 +166,62 @@ private[sims] final class PairCollider:
     val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount, stiffnessOf(last))
     contacts.side(c) = manifold.polygonSide
     cachePlacements(contacts, c)
-    val hot = contacts.hot
-    val cold = contacts.cold
     var p = 0
     while p < manifold.pointCount do
       setPoint(contacts, c, p, manifold.x(p), manifold.y(p), manifold.separation(p))
-      val q = contacts.hotPoint(c, p)
-      val r = contacts.coldPoint(c, p)
-      cold(r + CachedAnchorAX) = hot(q + AnchorAX); cold(r + CachedAnchorAY) = hot(q + AnchorAY)
-      cold(r + CachedAnchorBX) = hot(q + AnchorBX); cold(r + CachedAnchorBY) = hot(q + AnchorBY)
-      cold(r + CachedSeparation) = manifold.separation(p)
+      cacheAnchors(contacts, c, p)
       contacts.ids(2 * c + p) = manifold.id(p)
-      if last >= 0 then
-        val old = table.committed
-        var o = 0
-        while o < old.pointCount(last) do
-          if old.ids(2 * last + o) == manifold.id(p) then
-            val from = old.hotPoint(last, o)
-            hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
-            hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
-          o += 1
+      warmStartPoint(contacts, c, p, last)
       p += 1
 
-  /** Turns contact c of two circles on their bodies' centres to the normal they meet along:
-    * the line of their centres when, moving as at the start of the step, they first touch,
-    * or when they come closest within the step if they pass each other (the start's when they
-    * touch already). Its arms then lie along that normal, from each centre to the outline, and its
-    * separation is the gap along it.
+  /** `addManifold` for two circles on their bodies' centres (one point, id 0), turned to the
+    * normal they meet along if they are apart and approaching (see `aimAtImpact`): each slot
+    * written once.
+    */
+  private def addCircles(circleA: Circle, circleB: Circle, key: Long, last: Int): Unit =
+    val contacts = target
+    val c = start(contacts, circleA, circleB, key, manifold.normalX, manifold.normalY, 1, stiffnessOf(last))
+    contacts.side(c) = manifold.polygonSide
+    cachePlacements(contacts, c)
+    if !aimAtImpact(contacts, c, circleA, circleB) then
+      setPoint(contacts, c, 0, manifold.x(0), manifold.y(0), manifold.separation(0))
+      cacheAnchors(contacts, c, 0)
+    contacts.ids(2 * c) = manifold.id(0)
+    warmStartPoint(contacts, c, 0, last)
+
+  /** Point p of contact c as computed: its anchors and separation, which `keeps` compares with. */
+  private def cacheAnchors(contacts: Contacts, c: Int, p: Int): Unit =
+    val hot = contacts.hot
+    val cold = contacts.cold
+    val q = contacts.hotPoint(c, p)
+    val r = contacts.coldPoint(c, p)
+    cold(r + CachedAnchorAX) = hot(q + AnchorAX); cold(r + CachedAnchorAY) = hot(q + AnchorAY)
+    cold(r + CachedAnchorBX) = hot(q + AnchorBX); cold(r + CachedAnchorBY) = hot(q + AnchorBY)
+    cold(r + CachedSeparation) = cold(r + Separation)
+
+  /** The impulses of point p of contact c from the point of the last step's contact `last` (if
+    * any) with its feature id.
+    */
+  private def warmStartPoint(contacts: Contacts, c: Int, p: Int, last: Int): Unit =
+    if last >= 0 then
+      val id = contacts.ids(2 * c + p)
+      val old = table.committed
+      val q = contacts.hotPoint(c, p)
+      var o = 0
+      while o < old.pointCount(last) do
+        if old.ids(2 * last + o) == id then
+          val from = old.hotPoint(last, o)
+          contacts.hot(q + NormalImpulse) = old.hot(from + NormalImpulse)
+          contacts.hot(q + TangentImpulse) = old.hot(from + TangentImpulse)
+        o += 1
+
+  /** Writes the point of contact c of two circles on their bodies' centres turned to the normal
+    * they meet along, if they are apart and approaching: the line of their centres when, moving
+    * as at the start of the step, they first touch, or when they come closest within the step if
+    * they pass each other. Its arms then lie along that normal, from each centre to the outline,
+    * its separation is the gap along it, its impulses 0. Returns whether it did; otherwise (the
+    * circles touch already, or part) the manifold's point, along the line of centres at the
+    * start, stands.
     *
     * Why: the contact keeps its normal for the whole step, and a contact found before the balls
     * touch (speculative, up to a step ahead) has the line of centres of the start, which for two
@@ -200,7 +231,7 @@ private[sims] final class PairCollider:
     * closes before the balls touch. Along the line at impact the collision is as between real
     * balls; along the line of closest approach the gap never closes early.
     */
-  private def aimAtImpact(contacts: Contacts, c: Int, circleA: Circle, circleB: Circle): Unit =
+  private def aimAtImpact(contacts: Contacts, c: Int, circleA: Circle, circleB: Circle): Boolean =
     val a = contacts.bodyA(c)
     val b = contacts.bodyB(c)
     val dx = bodies.startX(b) - bodies.startX(a)
@@ -230,13 +261,14 @@ private[sims] final class PairCollider:
       val r = contacts.coldPoint(c, 0)
       hot(q + AnchorAX) = circleA.radius * nx; hot(q + AnchorAY) = circleA.radius * ny
       hot(q + AnchorBX) = -circleB.radius * nx; hot(q + AnchorBY) = -circleB.radius * ny
-      cold(r + CachedAnchorAX) = hot(q + AnchorAX); cold(r + CachedAnchorAY) = hot(q + AnchorAY)
-      cold(r + CachedAnchorBX) = hot(q + AnchorBX); cold(r + CachedAnchorBY) = hot(q + AnchorBY)
+      hot(q + NormalImpulse) = 0
+      hot(q + TangentImpulse) = 0
       cold(r + PointX) = bodies.startX(a) + hot(q + AnchorAX)
       cold(r + PointY) = bodies.startY(a) + hot(q + AnchorAY)
-      val separation = dx * nx + dy * ny - reach
-      cold(r + Separation) = separation
-      cold(r + CachedSeparation) = separation
+      cold(r + Separation) = dx * nx + dy * ny - reach
+      cacheAnchors(contacts, c, 0)
+      true
+    else false
 
   /** Whether the last step's contact `last` may be kept instead of computing the manifold
     * again: neither body turned by more than `KeepAngle` since it was computed, and the bodies'
