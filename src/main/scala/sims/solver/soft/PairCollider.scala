@@ -220,7 +220,7 @@ private[sims] final class PairCollider:
     * as at the start of the step, they first touch, or when they come closest within the step if
     * they pass each other. Its arms then lie along that normal, from each centre to the outline,
     * its separation is the gap along it, its impulses 0. Returns whether it did; otherwise (the
-    * circles touch already, or part) the manifold's point, along the line of centres at the
+    * circles touch already, or move apart) the manifold's point, along the line of centres at the
     * start, stands.
     *
     * Why: the contact keeps its normal for the whole step, and a contact found before the balls
