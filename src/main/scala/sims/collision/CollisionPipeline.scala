@@ -34,23 +34,17 @@ private[sims] final class CollisionPipeline:
     takeBounds(shapes, gridSide, maxPairs, limitName, margin, sweep)
     broadphase.findPairs(pairs, inGridOrder)
 
-  /** `findPairs` in the grid's own order, shared among threads, first part: takes the settings
-    * as `findPairs` does and starts the broadphase's update (see [[UniformGrid.beginUpdate]]);
-    * the caller then runs `broadphase.boundsOf` for ranges of the `shapes`, and `beginSharedPairs`.
+  /** `findPairs` in the grid's own order, shared among threads: takes the settings as
+    * `findPairs` does and starts the broadphase's update (see [[UniformGrid.beginUpdate]]); the
+    * caller then runs the broadphase's shared stages in turn, each for ranges of the shapes at
+    * once: `boundsOf`; `beginFineCells`, `fineCellsOf`, `endFineCells`; `beginSharedGrid` (if
+    * true: `buildGridOf`, `linkGridOf`, `endSharedGrid`); then `findPairsOf`, each range into a
+    * buffer of its own with this `maxPairs`, and `endShared(pairs, ...)`.
     */
   def beginSharedBounds(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
       sweep: Double): Unit =
     takeSettings(gridSide, maxPairs, limitName)
     broadphase.beginUpdate(shapes, margin, sweep, everyShape = false)
-
-  /** `findPairs` shared among threads, second part: ends the broadphase's update and starts its
-    * shared search (see [[UniformGrid.beginShared]]); the caller then runs
-    * `broadphase.findPairsOf` for ranges of its `shapeCount` shapes, each into a buffer of its
-    * own with this `maxPairs`, and ends with `broadphase.endShared(pairs, ...)`.
-    */
-  def beginSharedPairs(): Unit =
-    broadphase.endUpdate()
-    broadphase.beginShared(pairs)
 
   private def takeBounds(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
       sweep: Double): Unit =

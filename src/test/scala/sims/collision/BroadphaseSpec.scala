@@ -4,7 +4,7 @@ import org.scalacheck.Gen
 import org.scalatest.funsuite.AnyFunSuite
 import org.scalatest.matchers.should.Matchers
 import org.scalatestplus.scalacheck.ScalaCheckPropertyChecks
-import sims.dynamics.{Body, Circle, Shape, World}
+import sims.dynamics.{Body, Circle, Rectangle, RegularPolygon, Shape, World}
 import sims.geometry.Vector2D
 
 /** The grid broadphase finds exactly the pairs a brute-force all-pairs test finds. */
@@ -48,35 +48,95 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
   }
 
   /** The pairs of the grid's own order (the soft step's), found by one search or shared out in
-    * `ranges` ranges of shapes (their bounds too), with the pair tests each made.
+    * `ranges` ranges of shapes (their bounds, fine cells, fine grid and search), with the pair
+    * tests each made and whether the fine grid was built in ranges.
     */
-  private def ownOrderPairs(world: World, side: Double, ranges: Int, maxPairs: Int = 1000000): (Seq[(Int, Int)], Long) =
+  private def ownOrderPairs(world: World, side: Double, ranges: Int, maxPairs: Int = 1000000): (Seq[(Int, Int)], Long, Boolean) =
     val pipeline = world.collisionPipeline
     val grid = pipeline.broadphase
     val testsBefore = grid.pairTests
+    var inRanges = false
     if ranges == 0 then pipeline.findPairs(world.shapeBuffer, side, maxPairs, "maxPairs", 0, 0, inGridOrder = false)
     else
       pipeline.beginSharedBounds(world.shapeBuffer, side, maxPairs, "maxPairs", 0, 0)
       val n = world.shapeBuffer.length
-      // The bounds' ranges last to first: each writes its own shapes' slots only.
-      for r <- (0 until ranges).reverse do grid.boundsOf(n * r / ranges, n * (r + 1) / ranges)
-      pipeline.beginSharedPairs()
+      def start(items: Int, r: Int) = items * r / ranges
+      // Every stage's ranges last to first: each writes its own slots only.
+      for r <- (0 until ranges).reverse do grid.boundsOf(start(n, r), start(n, r + 1))
+      grid.beginFineCells(ranges)
+      for r <- (0 until ranges).reverse do grid.fineCellsOf(r, start(n, r), start(n, r + 1))
+      grid.endFineCells()
+      inRanges = grid.beginSharedGrid(pipeline.pairs)
+      if inRanges then
+        for r <- (0 until ranges).reverse do grid.buildGridOf(r)
+        val cells = grid.gridCells
+        for r <- (0 until ranges).reverse do grid.linkGridOf(start(cells, r), start(cells, r + 1))
+        grid.endSharedGrid()
       val buffers = Array.fill(ranges)(PairBuffer())
       buffers.foreach(_.limit = maxPairs)
-      val tests = (0 until ranges).map(r => grid.findPairsOf(n * r / ranges, n * (r + 1) / ranges, buffers(r))).sum
+      val tests = (0 until ranges).map(r => grid.findPairsOf(start(n, r), start(n, r + 1), buffers(r))).sum
       grid.endShared(pipeline.pairs, buffers, ranges, tests)
     val pairs = pipeline.pairs
-    ((0 until pairs.size).map(i => (pairs.first(i).worldIndex, pairs.second(i).worldIndex)), grid.pairTests - testsBefore)
+    ((0 until pairs.size).map(i => (pairs.first(i).worldIndex, pairs.second(i).worldIndex)), grid.pairTests - testsBefore,
+      inRanges)
 
   test("the search shared out in ranges of shapes finds the pairs of one search, in its order, with as many tests") {
     forAll(Gen.listOfN(80, shape), Gen.oneOf(0.5, 2.0, 7.0), Gen.oneOf(1, 2, 3, 7, 40), minSuccessful(40)) {
       (shapes, side, ranges) =>
         val world = scene(shapes, side)
-        val (alone, aloneTests) = ownOrderPairs(world, side, 0)
-        val (shared, sharedTests) = ownOrderPairs(world, side, ranges)
+        val (alone, aloneTests, _) = ownOrderPairs(world, side, 0)
+        val (shared, sharedTests, inRanges) = ownOrderPairs(world, side, ranges)
+        shared shouldBe alone
+        sharedTests shouldBe aloneTests
+        if ranges == 1 then inRanges shouldBe false
+        alone.sorted shouldBe bruteForce(world).map(p => (p._1.worldIndex, p._2.worldIndex)).sorted
+    }
+  }
+
+  test("the search shared out in ranges finds the pairs of one search in a sparse grid too (clusters 1 km apart)") {
+    forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0), Gen.oneOf(2, 3, 7), minSuccessful(20)) { (shapes, side, ranges) =>
+      shapes.zipWithIndex.foreach((s, i) => s.pos = s.pos + Vector2D(1000.0 * (i % 3), -700.0 * (i % 2)))
+      val world = scene(shapes, side)
+      val (alone, _, _) = ownOrderPairs(world, side, 0)
+      val (shared, _, inRanges) = ownOrderPairs(world, side, ranges)
+      shared shouldBe alone
+      inRanges shouldBe false
+    }
+  }
+
+  /** A pile: `n` small shapes of the first three kinds within 6 m, a body each (a dense fine grid). */
+  private def pile(n: Int): Gen[World] =
+    val small =
+      for
+        size <- Gen.choose(0.05, 0.3)
+        kind <- Gen.choose(0, 2)
+        x <- Gen.choose(0.0, 6.0)
+        y <- Gen.choose(0.0, 6.0)
+      yield
+        val s = kind match
+          case 0 => Circle(size, 1)
+          case 1 => Rectangle(size, size / 2, 1)
+          case _ => RegularPolygon(5, size, 1)
+        s.pos = Vector2D(x, y)
+        s
+    Gen.listOfN(n, small).map { shapes =>
+      val world = World()
+      shapes.foreach(s => world += s.asBody)
+      world
+    }
+
+  test("a pile's fine grid is built in ranges, step after step as its shapes move, with the pairs of one search") {
+    // The ranges' chains are stamped per build: a cell of an earlier build must not leak into a later one.
+    forAll(pile(150), Gen.oneOf(2, 3, 7), minSuccessful(10)) { (world, ranges) =>
+      for round <- 0 until 5 do
+        val (alone, aloneTests, _) = ownOrderPairs(world, 2.0, 0)
+        val (shared, sharedTests, inRanges) = ownOrderPairs(world, 2.0, ranges)
+        inRanges shouldBe true
         shared shouldBe alone
         sharedTests shouldBe aloneTests
         alone.sorted shouldBe bruteForce(world).map(p => (p._1.worldIndex, p._2.worldIndex)).sorted
+        for (body, i) <- world.bodies.zipWithIndex do
+          body.pos = body.pos + Vector2D(0.3 * ((i + round) % 3 - 1), 0.2 * (i % 2))
     }
   }
 
@@ -103,7 +163,7 @@ class BroadphaseSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyCh
             if j != big && !(large(j) && j < big)
             if all(big).AABB.overlaps(other.AABB) && PairFilter.accepts(all(big), other)
           yield (math.min(j, big), math.max(j, big))
-        val (found, _) = ownOrderPairs(world, side, 0)
+        val (found, _, _) = ownOrderPairs(world, side, 0)
         found.filter((a, b) => large(a) || large(b)) shouldBe expected
         found.takeRight(expected.size) shouldBe expected
     }

@@ -19,6 +19,10 @@ private[broadphase] final class CellGrid:
   private var entries = 0
   private var dense = false
   private var columns, rows = 0
+  // A dense grid built by ranges of shapes at once (see `beginRanges`): per range and cell, the
+  // range's own chain, its first and last entry, valid where the range's stamp is `stamp`.
+  private var ranges = 0
+  private var rangeHeads, rangeTails, rangeStamps = new Array[Int](0)
 
   /** Empties the grid, sized for about `shapes` shapes whose cells will lie in the box of
     * `columns` x `rows` cells from (0, 0), if that is known (0 x 0 if not).
@@ -33,12 +37,66 @@ private[broadphase] final class CellGrid:
     stamp += 1
     if stamp == Int.MaxValue then
       java.util.Arrays.fill(stamps, 0)
+      java.util.Arrays.fill(rangeStamps, 0)
       stamp = 1
     used = 0
     entries = 0
 
   /** Whether the grid is dense since the last `reset`. */
   def isDense: Boolean = dense
+
+  /** The cells of a dense grid, `columns` x `rows`. */
+  def cells: Int = columns * rows
+
+  /** Starts filling an empty dense grid from `ranges` ranges of shapes at once, with `entries`
+    * entries in all: each range puts its shapes into chains of its own (`insertInRange`), then
+    * `linkRanges` joins each cell's chains, the last range's first: the chains `insert` makes
+    * when the ranges' shapes come in order.
+    */
+  def beginRanges(ranges: Int, entries: Int): Unit =
+    if !dense then throw IllegalStateException("the ranges fill a dense grid only")
+    this.ranges = ranges
+    if entryShape.length < entries then
+      entryShape = new Array[Int](2 * entries)
+      entryNext = new Array[Int](2 * entries)
+    this.entries = entries
+    val slots = ranges * cells
+    if rangeStamps.length < slots then
+      rangeHeads = new Array[Int](2 * slots)
+      rangeTails = new Array[Int](2 * slots)
+      rangeStamps = new Array[Int](2 * slots) // 0: no stamp, which starts at 1
+
+  /** Adds shape index `shape` as entry `entry` to the front of range `range`'s chain of cell
+    * (cx, cy): writes that entry and the range's slots only.
+    */
+  def insertInRange(range: Int, cx: Int, cy: Int, shape: Int, entry: Int): Unit =
+    val k = range * cells + cx * rows + cy
+    entryShape(entry) = shape
+    if rangeStamps(k) != stamp then
+      rangeStamps(k) = stamp
+      rangeTails(k) = entry
+      entryNext(entry) = -1
+    else entryNext(entry) = rangeHeads(k)
+    rangeHeads(k) = entry
+
+  /** Joins the ranges' chains of the cells (slots) `from` until `until`, the last range's first. */
+  def linkRanges(from: Int, until: Int): Unit =
+    val cells = this.cells
+    var slot = from
+    while slot < until do
+      var head = -1
+      var tail = -1
+      var r = ranges - 1
+      while r >= 0 do
+        val k = r * cells + slot
+        if rangeStamps(k) == stamp then
+          if tail >= 0 then entryNext(tail) = rangeHeads(k) else head = rangeHeads(k)
+          tail = rangeTails(k)
+        r -= 1
+      if head >= 0 then
+        stamps(slot) = stamp
+        heads(slot) = head
+      slot += 1
 
   /** The slot of cell (cx, cy), claimed for it (with an empty chain) if the cell was empty:
     * for `head` and `push`, until the next `open` or `reset`. One probe serves a cell's visit
@@ -103,6 +161,8 @@ private[broadphase] final class CellGrid:
     stamps = new Array[Int](capacity)
     heads = new Array[Int](capacity)
     mask = capacity - 1
+    // The stamps start again: no range's slot may hold one of the new stamps.
+    java.util.Arrays.fill(rangeStamps, 0)
     stamp = 1
     used = 0
 

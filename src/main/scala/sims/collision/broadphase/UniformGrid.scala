@@ -76,6 +76,11 @@ private[sims] final class UniformGrid extends Broadphase:
   // The settings of the update under way (see `beginUpdate`).
   private var updateMargin, updateSweep = 0.0
   private var updateEveryShape = false
+  // A shared `endUpdate` and grid build: ranges of shapes (see `beginFineCells`), and per range
+  // its wide shapes, its fine shapes' entries in the grid (then: the first entry) and their box.
+  private var fineRanges = 1
+  private var rangeFrom, rangeUntil, rangeWide, rangeEntries = new Array[Int](0)
+  private var rangeBox = new Array[Double](0)
 
   def update(shapes: Array[Shape], margin: Double): Unit = update(shapes, margin, 0, everyShape = false)
 
@@ -134,6 +139,15 @@ private[sims] final class UniformGrid extends Broadphase:
     * mean extent of the others) and each fine shape's fine cells.
     */
   def endUpdate(): Unit =
+    beginFineCells(1)
+    fineCellsOf(0, 0, count)
+    endFineCells()
+
+  /** Starts `endUpdate` shared among threads: the large shapes and the fine cells' size, here;
+    * then `fineCellsOf` for `ranges` ranges of the shapes in order (they may run at once), then
+    * `endFineCells` (the same grid as `endUpdate`).
+    */
+  def beginFineCells(ranges: Int): Unit =
     val side = _gridSide
     large.clear()
     wide.clear()
@@ -161,20 +175,57 @@ private[sims] final class UniformGrid extends Broadphase:
       if mean > 0 && mean <= side then mean else side
     // Fine cells by multiplication: any consistent cell function serves the internal grid.
     perFine = 1 / fine
-    fineMinX = Double.PositiveInfinity; fineMinY = Double.PositiveInfinity
-    fineMaxX = Double.NegativeInfinity; fineMaxY = Double.NegativeInfinity
-    i = 0
-    while i < count do
+    fineRanges = ranges
+    if rangeFrom.length < ranges then
+      rangeFrom = new Array[Int](ranges); rangeUntil = new Array[Int](ranges)
+      rangeWide = new Array[Int](ranges); rangeEntries = new Array[Int](ranges)
+      rangeBox = new Array[Double](4 * ranges)
+
+  /** The fine cells of shapes `from` until `until`, range `range` of `beginFineCells`: writes
+    * their slots and the range's own only.
+    */
+  def fineCellsOf(range: Int, from: Int, until: Int): Unit =
+    var minX, minY = Double.PositiveInfinity
+    var maxX, maxY = Double.NegativeInfinity
+    var wides = 0
+    var entries = 0
+    var i = from
+    while i < until do
       if placement(i) == Fine then
         fineX0(i) = fineCell(boxMinX(i) - originX, perFine); fineX1(i) = fineCell(boxMaxX(i) - originX, perFine)
         fineY0(i) = fineCell(boxMinY(i) - originY, perFine); fineY1(i) = fineCell(boxMaxY(i) - originY, perFine)
-        if cellCount(fineX0(i), fineX1(i), fineY0(i), fineY1(i)) > FineShapeCells then
+        val cells = cellCount(fineX0(i), fineX1(i), fineY0(i), fineY1(i))
+        if cells > FineShapeCells then
           placement(i) = Wide
-          wide += i
+          wides += 1
         else
-          fineMinX = math.min(fineMinX, boxMinX(i)); fineMinY = math.min(fineMinY, boxMinY(i))
-          fineMaxX = math.max(fineMaxX, boxMaxX(i)); fineMaxY = math.max(fineMaxY, boxMaxY(i))
+          entries += cells.toInt
+          minX = math.min(minX, boxMinX(i)); minY = math.min(minY, boxMinY(i))
+          maxX = math.max(maxX, boxMaxX(i)); maxY = math.max(maxY, boxMaxY(i))
       i += 1
+    rangeFrom(range) = from
+    rangeUntil(range) = until
+    rangeWide(range) = wides
+    rangeEntries(range) = entries
+    rangeBox(4 * range) = minX; rangeBox(4 * range + 1) = minY
+    rangeBox(4 * range + 2) = maxX; rangeBox(4 * range + 3) = maxY
+
+  /** Ends a shared `endUpdate`: the box of the fine shapes (minima and maxima: the same in any
+    * order) and the wide shapes, in shape order.
+    */
+  def endFineCells(): Unit =
+    fineMinX = Double.PositiveInfinity; fineMinY = Double.PositiveInfinity
+    fineMaxX = Double.NegativeInfinity; fineMaxY = Double.NegativeInfinity
+    var r = 0
+    while r < fineRanges do
+      fineMinX = math.min(fineMinX, rangeBox(4 * r)); fineMinY = math.min(fineMinY, rangeBox(4 * r + 1))
+      fineMaxX = math.max(fineMaxX, rangeBox(4 * r + 2)); fineMaxY = math.max(fineMaxY, rangeBox(4 * r + 3))
+      if rangeWide(r) > 0 then
+        var i = rangeFrom(r)
+        while i < rangeUntil(r) do
+          if placement(i) == Wide then wide += i
+          i += 1
+      r += 1
     gridBuilt = false
 
   def findPairs(pairs: PairBuffer): Unit = findPairs(pairs, inGridOrder = true)
@@ -305,6 +356,51 @@ private[sims] final class UniformGrid extends Broadphase:
     sorted = false
     pairs.clear(shapes)
     buildGrid()
+
+  /** `beginShared` with the fine grid built by several threads: false when it built the grid
+    * itself (a sparse grid, or one range); true when it is to be built by `buildGridOf` for each
+    * range of the last `beginFineCells` (at once), then `linkGridOf` for ranges of its
+    * `gridCells` cells (at once), then `endSharedGrid`: the grid `beginShared` builds.
+    */
+  def beginSharedGrid(pairs: PairBuffer): Boolean =
+    sorted = false
+    pairs.clear(shapes)
+    resetGrid()
+    if !grid.isDense || fineRanges < 2 then
+      fillGrid()
+      false
+    else
+      // Each range's entries follow the earlier ranges'.
+      var first = 0
+      var r = 0
+      while r < fineRanges do
+        val n = rangeEntries(r)
+        rangeEntries(r) = first
+        first += n
+        r += 1
+      grid.beginRanges(fineRanges, first)
+      true
+
+  /** Puts range `range`'s fine shapes into its own chains of the fine grid (see `beginSharedGrid`). */
+  def buildGridOf(range: Int): Unit =
+    var entry = rangeEntries(range)
+    var i = rangeFrom(range)
+    while i < rangeUntil(range) do
+      if placement(i) == Fine then
+        forEachFineCell(i) { (cx, cy) =>
+          grid.insertInRange(range, cx, cy, i, entry)
+          entry += 1
+        }
+      i += 1
+
+  /** The cells of the fine grid under construction (see `beginSharedGrid`). */
+  def gridCells: Int = grid.cells
+
+  /** Joins the ranges' chains of cells `from` until `until` (see `beginSharedGrid`). */
+  def linkGridOf(from: Int, until: Int): Unit = grid.linkRanges(from, until)
+
+  /** Ends a grid built by several threads (see `beginSharedGrid`). */
+  def endSharedGrid(): Unit = gridBuilt = true
 
   /** The pairs of shapes `from` until `until` (a shape's partners among the earlier shapes, as
     * `findPairs` finds them) into `out`, which is cleared first. Reads the grid only: ranges
@@ -464,7 +560,10 @@ private[sims] final class UniformGrid extends Broadphase:
     */
   private def buildGrid(): Unit =
     resetGrid()
-    // Shape by shape and cell by cell, as `findPairs` pushes them (`findPairsOf` relies on it).
+    fillGrid()
+
+  // Shape by shape and cell by cell, as `findPairs` pushes them (`findPairsOf` relies on it).
+  private def fillGrid(): Unit =
     var i = 0
     while i < count do
       if placement(i) == Fine then

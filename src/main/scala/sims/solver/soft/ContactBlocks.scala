@@ -156,24 +156,26 @@ private[sims] final class ContactBlocks:
     if slab.length < n then slab = new Array[Int](2 * n)
     if coordinate.length < n then coordinate = new Array[Double](2 * n)
     val gravity = math.sqrt(gx * gx + gy * gy)
-    var minX, minY = Double.PositiveInfinity
-    var maxX, maxY = Double.NegativeInfinity
-    var moving = 0
-    var i = 0
-    while i < n do
-      if bodies.invMass(i) != 0 then
-        val x = bodies.startX(i); val y = bodies.startY(i)
-        if x < minX then minX = x
-        if x > maxX then maxX = x
-        if y < minY then minY = y
-        if y > maxY then maxY = y
-        moving += 1
-      i += 1
-    // The axis (ax, ay): up against gravity, or the box's longer side.
+    // The axis (ax, ay): up against gravity, or the longer side of the moving bodies' box.
     val upward = gravity > 0 && !gravity.isInfinite
-    val wide = maxX - minX >= maxY - minY
-    val ax = if upward then -gx / gravity else if wide then 1.0 else 0.0
-    val ay = if upward then -gy / gravity else if wide then 0.0 else 1.0
+    var ax = if upward then -gx / gravity else 0.0
+    var ay = if upward then -gy / gravity else 0.0
+    var i = 0
+    if !upward then
+      var minX, minY = Double.PositiveInfinity
+      var maxX, maxY = Double.NegativeInfinity
+      while i < n do
+        if bodies.invMass(i) != 0 then
+          val x = bodies.startX(i); val y = bodies.startY(i)
+          if x < minX then minX = x
+          if x > maxX then maxX = x
+          if y < minY then minY = y
+          if y > maxY then maxY = y
+        i += 1
+      val wide = maxX - minX >= maxY - minY
+      ax = if wide then 1.0 else 0.0
+      ay = if wide then 0.0 else 1.0
+    var moving = 0
     var low = Double.PositiveInfinity
     var high = Double.NegativeInfinity
     i = 0
@@ -183,6 +185,7 @@ private[sims] final class ContactBlocks:
         coordinate(i) = value
         if value < low then low = value
         if value > high then high = value
+        moving += 1
       i += 1
     val extent = high - low
     val scale = if extent > 0 && !extent.isInfinite then Bins / extent else 0.0

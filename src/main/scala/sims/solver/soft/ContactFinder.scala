@@ -76,6 +76,12 @@ private[sims] final class ContactFinder:
 
   private val boundsTask: Workers.Task = index => grid.boundsOf(from(index), from(index + 1))
 
+  private val fineCellsTask: Workers.Task = index => grid.fineCellsOf(index, from(index), from(index + 1))
+
+  private val buildTask: Workers.Task = index => grid.buildGridOf(index)
+
+  private val linkTask: Workers.Task = index => grid.linkGridOf(from(index), from(index + 1))
+
   /** Fills `table.current` with this step's contacts of `world`, whose bodies `bodies` holds,
     * with the world's broadphase in cells of `gridSide` and at most `maxPairs` candidate pairs,
     * the pairs shared out among `workers` when there are many.
@@ -183,9 +189,20 @@ private[sims] final class ContactFinder:
     grid = stages.broadphase
     ranges = count
     items = shapes.length
-    try workers.run(count, boundsTask)
+    try
+      workers.run(count, boundsTask)
+      // The fine cells and the fine grid in a range of shapes per worker (each shape's share of
+      // the work is about the same), the grid's chains then joined in ranges of cells.
+      ranges = workers.count
+      grid.beginFineCells(ranges)
+      workers.run(ranges, fineCellsTask)
+      grid.endFineCells()
+      if grid.beginSharedGrid(stages.pairs) then
+        workers.run(ranges, buildTask)
+        items = grid.gridCells
+        workers.run(ranges, linkTask)
+        grid.endSharedGrid()
     finally grid = null
-    stages.beginSharedPairs()
     if pairRanges.length < count then
       pairRanges = Array.fill(count)(PairBuffer())
       pairTests = new Array[Long](count)
