@@ -193,7 +193,7 @@ private[sims] final class ContactFinder:
       workers.run(count, boundsTask)
       // The fine cells and the fine grid in a range of shapes per worker (each shape's share of
       // the work is about the same), the grid's chains then joined in ranges of cells.
-      ranges = workers.count
+      ranges = math.min(workers.count, ContactFinder.MostGridRanges)
       grid.beginFineCells(ranges)
       workers.run(ranges, fineCellsTask)
       grid.endFineCells()
@@ -312,3 +312,8 @@ private[sims] final class ContactFinder:
 private object ContactFinder:
   /** Ranges of pairs per worker in a shared stage: a worker that starts late finds work left. */
   inline val RangesPerWorker = 4
+
+  /** Ranges of shapes that fill the fine grid at most: each keeps a chain per cell of the grid
+    * (three Ints a cell), and each cell's chains are joined one by one.
+    */
+  inline val MostGridRanges = 8
