@@ -347,20 +347,13 @@ private[sims] final class UniformGrid extends Broadphase:
   /** Number of shapes of the last `update`. */
   def shapeCount: Int = count
 
-  /** Starts `findPairs(pairs, inGridOrder = false)` shared among threads: every shape goes into
-    * the fine grid at once, after which `findPairsOf` may run for ranges of shapes on several
-    * threads, each into a buffer of its own, and `endShared` puts the buffers into `pairs`: the
-    * same pairs in the same order.
-    */
-  def beginShared(pairs: PairBuffer): Unit =
-    sorted = false
-    pairs.clear(shapes)
-    buildGrid()
-
-  /** `beginShared` with the fine grid built by several threads: false when it built the grid
-    * itself (a sparse grid, or one range); true when it is to be built by `buildGridOf` for each
+  /** Starts `findPairs(pairs, inGridOrder = false)` shared among threads (after `endFineCells`):
+    * every fine shape goes into the fine grid, after which `findPairsOf` may run for ranges of
+    * shapes on several threads, each into a buffer of its own, and `endShared` puts the buffers
+    * into `pairs`: the same pairs in the same order. Returns false when it filled the grid itself
+    * (a sparse grid, or one range); true when the grid is to be filled by `buildGridOf` for each
     * range of the last `beginFineCells` (at once), then `linkGridOf` for ranges of its
-    * `gridCells` cells (at once), then `endSharedGrid`: the grid `beginShared` builds.
+    * `gridCells` cells (at once), then `endSharedGrid`: the grid one thread fills.
     */
   def beginSharedGrid(pairs: PairBuffer): Boolean =
     sorted = false

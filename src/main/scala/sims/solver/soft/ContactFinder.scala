@@ -177,7 +177,7 @@ private[sims] final class ContactFinder:
     if !bodies.anyAsleep || !world.detector.isInstanceOf[GridDetector] then table.current.active = table.current.count
 
   /** The broadphase's pairs in ranges of shapes shared out among `workers` (see
-    * [[sims.collision.broadphase.UniformGrid.beginShared]]): the same pairs, in the same order,
+    * [[sims.collision.broadphase.UniformGrid.beginSharedGrid]]): the same pairs, in the same order,
     * as on one thread.
     */
   private def findPairsShared(workers: Workers, world: World, gridSide: Double, maxPairs: Int,
