@@ -36,9 +36,10 @@ object WorldCodec:
     * soft step's own: it used the detector's; version 4 no kinematic bodies, damping, gravity
     * scales, ids or names, no contact-event switches, no weld, wheel or motor joints, no chain
     * segments, no joint limits, motors, springs or break limits, and two impulses per revolute
-    * or prismatic joint; version 5 no sleeping: every body awake).
+    * or prismatic joint; version 5 no sleeping: every body awake; version 6 no mark of the
+    * contacts between two circles on their bodies' centres).
     */
-  val FormatVersion: Int = 6
+  val FormatVersion: Int = 7
 
   /** The bytes of `world`'s state; fails with an IllegalArgumentException naming a type it cannot
     * save.

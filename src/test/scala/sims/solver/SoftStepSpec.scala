@@ -249,6 +249,33 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     classic.head.normalImpulses.forall(_ == 0) shouldBe true
   }
 
+  test("a ball spinning on a ball stays where it rests: a turn moves no circle's outline") {
+    val world = World()
+    world.solver = SoftStep(workers = 1)
+    val base = Circle(1, 1)
+    base.friction = 0
+    val fixed = base.asBody; fixed.fixed = true
+    world += fixed
+    val ball = Circle(0.1, 1)
+    ball.pos = Vector2D(0, 1.1)
+    ball.friction = 0 // keeps its spin
+    val body = ball.asBody
+    world += body
+    for _ <- 1 to 60 do world.step()
+    val resting = body.pos.y
+    body.angularVelocity = 60 // a turn of 1 rad a step
+    var lowest, highest = resting
+    for _ <- 1 to 120 do
+      world.step()
+      lowest = math.min(lowest, body.pos.y)
+      highest = math.max(highest, body.pos.y)
+    // Were the ball's arm turned with it, its outline would seem to leave the base within the
+    // step (by r (1 - cos 1 rad), 4.6 cm), and the ball would sink until the next step.
+    (resting - lowest) should be < 1e-5
+    (highest - resting) should be < 1e-5
+    body.angularVelocity shouldBe 60.0 +- 1e-9
+  }
+
   test("the direct solver makes every joint of a chain exact: after a relax pass no link moves apart") {
     val world = World()
     world.gravity = Vector2D.Null

@@ -10,6 +10,8 @@ import sims.solver.soft.SoftBodies.*
   * normal n (from A to B) and tangent t = n.leftNormal:
   *   C     = s, the separation, >= 0; during the substeps s = s0 + n . (dB(point) - dA(point))
   *           with d(point) = dp + R(dAngle) r - r the point's displacement since the start
+  *           (for two circles on their bodies' centres, `Contacts.centred`, d = dp: their arms
+  *           lie along n, so r x n = 0 and no turn moves an outline along n)
   *   Cdot  = vn = n . (vB + wB x rB - vA - wA x rA)
   *   K     = 1/mA + 1/mB + (rA x n)^2 / IA + (rB x n)^2 / IB     (its inverse: the normal mass)
   *   lambda = -normalMass massScale (vn + bias) - impulseScale lambdaAcc, then lambdaAcc >= 0
@@ -56,14 +58,22 @@ private[sims] object ContactConstraints:
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val tx = -ny; val ty = nx
       val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
+      val centred = contacts.centred(c)
       var p = 0
       while p < contacts.pointCount(c) do
         val q = contacts.hotPoint(c, p)
         val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
         val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-        hot(q + BaseSeparation) = cold(contacts.coldPoint(c, p) + Separation) - ((rBx - rAx) * nx + (rBy - rAy) * ny)
-        val rnA = rAx * ny - rAy * nx; val rnB = rBx * ny - rBy * nx
-        val kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB
+        val separation = cold(contacts.coldPoint(c, p) + Separation)
+        val kNormal =
+          if centred then
+            // Arms along the normal: no moment about it, and a turn moves no outline along it.
+            hot(q + BaseSeparation) = separation
+            mA + mB
+          else
+            hot(q + BaseSeparation) = separation - ((rBx - rAx) * nx + (rBy - rAy) * ny)
+            val rnA = rAx * ny - rAy * nx; val rnB = rBx * ny - rBy * nx
+            mA + mB + iA * rnA * rnA + iB * rnB * rnB
         hot(q + NormalMass) = if kNormal > 0 then 1 / kNormal else 0
         val rtA = rAx * ty - rAy * tx; val rtB = rBx * ty - rBy * tx
         val kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB
@@ -125,7 +135,8 @@ private[sims] object ContactConstraints:
     * second point sees its first point's impulse through their coupling, 1/mA + 1/mB +
     * (rA0 x n)(rA1 x n) / IA + (rB0 x n)(rB1 x n) / IB, the change that impulse makes to its
     * velocity, and the bodies take both impulses at once: Gauss-Seidel over the points as
-    * before, with a chain half as long.
+    * before, with a chain half as long. A contact of two centred circles takes a shorter way
+    * (`solveCentred`).
     */
   def solve(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int, inverseH: Double,
       contactSpeed: Double, useBias: Boolean): Unit =
@@ -137,73 +148,116 @@ private[sims] object ContactConstraints:
     var n = from
     while n < until do
       val c = order(n)
-      val sA = contacts.bodyA(c) * SoftBodies.Stride
-      val sB = contacts.bodyB(c) * SoftBodies.Stride
-      val mA = masses(4 * c); val iA = masses(4 * c + 1)
-      val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
-      var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
-      var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
-      // B's displacement relative to A's since the step began, and their turns: the points'
-      // current separations.
-      val dpx = state(sB + ShiftX) - state(sA + ShiftX)
-      val dpy = state(sB + ShiftY) - state(sA + ShiftY)
-      val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
-      val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
-      val k = contacts.offset(c)
-      val nx = hot(k + NormalX); val ny = hot(k + NormalY)
-      val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
-      val q0 = k + Header
-      val s0 = separationAt(hot, q0, nx, ny, dpx, dpy, cosA, sinA, cosB, sinB)
-      val rnA0 = hot(q0 + AnchorAX) * ny - hot(q0 + AnchorAY) * nx
-      val rnB0 = hot(q0 + AnchorBX) * ny - hot(q0 + AnchorBY) * nx
-      val turnA0 = iA * rnA0; val turnB0 = iB * rnB0
-      val vn0 = ((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB0 - wA * rnA0)
-      val impulse0 = solveNormal(hot, k, q0, s0, vn0, inverseH, contactSpeed, useBias, bouncing, records, c, 0)
-      val two = contacts.pointCount(c) == 2
-      if !two then
-        vAx -= impulse0 * mAnx; vAy -= impulse0 * mAny; wA -= impulse0 * turnA0
-        vBx += impulse0 * mBnx; vBy += impulse0 * mBny; wB += impulse0 * turnB0
+      if contacts.centred(c) then solveCentred(contacts, state, c, inverseH, contactSpeed, useBias)
       else
-        val q1 = q0 + HotPoint
-        val s1 = separationAt(hot, q1, nx, ny, dpx, dpy, cosA, sinA, cosB, sinB)
-        val rnA1 = hot(q1 + AnchorAX) * ny - hot(q1 + AnchorAY) * nx
-        val rnB1 = hot(q1 + AnchorBX) * ny - hot(q1 + AnchorBY) * nx
-        val turnA1 = iA * rnA1; val turnB1 = iB * rnB1
-        val coupling = (mA + mB) + (turnA0 * rnA1 + turnB0 * rnB1)
-        val vn1 = (((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB1 - wA * rnA1)) + coupling * impulse0
-        val impulse1 = solveNormal(hot, k, q1, s1, vn1, inverseH, contactSpeed, useBias, bouncing, records, c, 1)
-        val both = impulse0 + impulse1
-        vAx -= both * mAnx; vAy -= both * mAny; wA -= impulse0 * turnA0 + impulse1 * turnA1
-        vBx += both * mBnx; vBy += both * mBny; wB += impulse0 * turnB0 + impulse1 * turnB1
-      // Friction, in the relax pass only (as in Box2D v3; solving it in the solve pass too
-      // measured no better on the stack, pyramid and ball-pit scenes), bounded by the normal
-      // impulses just found.
-      if !useBias then
-        val tx = -ny; val ty = nx
-        val friction = hot(k + Friction)
-        val mAtx = mA * tx; val mAty = mA * ty; val mBtx = mB * tx; val mBty = mB * ty
-        val rtA0 = hot(q0 + AnchorAX) * ty - hot(q0 + AnchorAY) * tx
-        val rtB0 = hot(q0 + AnchorBX) * ty - hot(q0 + AnchorBY) * tx
-        val turnA0 = iA * rtA0; val turnB0 = iB * rtB0
-        val vt0 = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB0 - wA * rtA0)
-        val impulse0 = solveFriction(hot, q0, friction, vt0)
+        val sA = contacts.bodyA(c) * SoftBodies.Stride
+        val sB = contacts.bodyB(c) * SoftBodies.Stride
+        val mA = masses(4 * c); val iA = masses(4 * c + 1)
+        val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
+        var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
+        var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
+        // B's displacement relative to A's since the step began, and their turns: the points'
+        // current separations.
+        val dpx = state(sB + ShiftX) - state(sA + ShiftX)
+        val dpy = state(sB + ShiftY) - state(sA + ShiftY)
+        val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
+        val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
+        val k = contacts.offset(c)
+        val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+        val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
+        val q0 = k + Header
+        val s0 = separationAt(hot, q0, nx, ny, dpx, dpy, cosA, sinA, cosB, sinB)
+        val rnA0 = hot(q0 + AnchorAX) * ny - hot(q0 + AnchorAY) * nx
+        val rnB0 = hot(q0 + AnchorBX) * ny - hot(q0 + AnchorBY) * nx
+        val turnA0 = iA * rnA0; val turnB0 = iB * rnB0
+        val vn0 = ((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB0 - wA * rnA0)
+        val impulse0 = solveNormal(hot, k, q0, s0, vn0, inverseH, contactSpeed, useBias, bouncing, records, c, 0)
+        val two = contacts.pointCount(c) == 2
         if !two then
-          vAx -= impulse0 * mAtx; vAy -= impulse0 * mAty; wA -= impulse0 * turnA0
-          vBx += impulse0 * mBtx; vBy += impulse0 * mBty; wB += impulse0 * turnB0
+          vAx -= impulse0 * mAnx; vAy -= impulse0 * mAny; wA -= impulse0 * turnA0
+          vBx += impulse0 * mBnx; vBy += impulse0 * mBny; wB += impulse0 * turnB0
         else
           val q1 = q0 + HotPoint
-          val rtA1 = hot(q1 + AnchorAX) * ty - hot(q1 + AnchorAY) * tx
-          val rtB1 = hot(q1 + AnchorBX) * ty - hot(q1 + AnchorBY) * tx
-          val turnA1 = iA * rtA1; val turnB1 = iB * rtB1
-          val coupling = (mA + mB) + (turnA0 * rtA1 + turnB0 * rtB1)
-          val vt1 = (((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB1 - wA * rtA1)) + coupling * impulse0
-          val impulse1 = solveFriction(hot, q1, friction, vt1)
+          val s1 = separationAt(hot, q1, nx, ny, dpx, dpy, cosA, sinA, cosB, sinB)
+          val rnA1 = hot(q1 + AnchorAX) * ny - hot(q1 + AnchorAY) * nx
+          val rnB1 = hot(q1 + AnchorBX) * ny - hot(q1 + AnchorBY) * nx
+          val turnA1 = iA * rnA1; val turnB1 = iB * rnB1
+          val coupling = (mA + mB) + (turnA0 * rnA1 + turnB0 * rnB1)
+          val vn1 = (((vBx - vAx) * nx + (vBy - vAy) * ny) + (wB * rnB1 - wA * rnA1)) + coupling * impulse0
+          val impulse1 = solveNormal(hot, k, q1, s1, vn1, inverseH, contactSpeed, useBias, bouncing, records, c, 1)
           val both = impulse0 + impulse1
-          vAx -= both * mAtx; vAy -= both * mAty; wA -= impulse0 * turnA0 + impulse1 * turnA1
-          vBx += both * mBtx; vBy += both * mBty; wB += impulse0 * turnB0 + impulse1 * turnB1
-      state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
-      state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
+          vAx -= both * mAnx; vAy -= both * mAny; wA -= impulse0 * turnA0 + impulse1 * turnA1
+          vBx += both * mBnx; vBy += both * mBny; wB += impulse0 * turnB0 + impulse1 * turnB1
+        // Friction, in the relax pass only (as in Box2D v3; solving it in the solve pass too
+        // measured no better on the stack, pyramid and ball-pit scenes), bounded by the normal
+        // impulses just found.
+        if !useBias then
+          val tx = -ny; val ty = nx
+          val friction = hot(k + Friction)
+          val mAtx = mA * tx; val mAty = mA * ty; val mBtx = mB * tx; val mBty = mB * ty
+          val rtA0 = hot(q0 + AnchorAX) * ty - hot(q0 + AnchorAY) * tx
+          val rtB0 = hot(q0 + AnchorBX) * ty - hot(q0 + AnchorBY) * tx
+          val turnA0 = iA * rtA0; val turnB0 = iB * rtB0
+          val vt0 = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB0 - wA * rtA0)
+          val impulse0 = solveFriction(hot, q0, friction, vt0)
+          if !two then
+            vAx -= impulse0 * mAtx; vAy -= impulse0 * mAty; wA -= impulse0 * turnA0
+            vBx += impulse0 * mBtx; vBy += impulse0 * mBty; wB += impulse0 * turnB0
+          else
+            val q1 = q0 + HotPoint
+            val rtA1 = hot(q1 + AnchorAX) * ty - hot(q1 + AnchorAY) * tx
+            val rtB1 = hot(q1 + AnchorBX) * ty - hot(q1 + AnchorBY) * tx
+            val turnA1 = iA * rtA1; val turnB1 = iB * rtB1
+            val coupling = (mA + mB) + (turnA0 * rtA1 + turnB0 * rtB1)
+            val vt1 = (((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB1 - wA * rtA1)) + coupling * impulse0
+            val impulse1 = solveFriction(hot, q1, friction, vt1)
+            val both = impulse0 + impulse1
+            vAx -= both * mAtx; vAy -= both * mAty; wA -= impulse0 * turnA0 + impulse1 * turnA1
+            vBx += both * mBtx; vBy += both * mBty; wB += impulse0 * turnB0 + impulse1 * turnB1
+        state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
+        state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       n += 1
+
+  /** `solve` for contact c of two circles on their bodies' centres: one point, its arms along
+    * the normal, so the normal row neither reads nor changes the bodies' spin, and its
+    * separation is the centres' approach alone (a turned arm would move a circle's outline off
+    * the point: a spinning ball would seem to part from what it rests on). A method of its own,
+    * not inlined into the loop: the loop's other contacts' code already holds as many inlined
+    * calls as the compiler allows.
+    */
+  private def solveCentred(contacts: Contacts, state: Array[Double], c: Int, inverseH: Double,
+      contactSpeed: Double, useBias: Boolean): Unit =
+    val hot = contacts.hot
+    val masses = contacts.masses
+    val sA = contacts.bodyA(c) * SoftBodies.Stride
+    val sB = contacts.bodyB(c) * SoftBodies.Stride
+    val mA = masses(4 * c); val mB = masses(4 * c + 2)
+    var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY)
+    var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY)
+    val k = contacts.offset(c)
+    val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+    val q = k + Header
+    val s = (state(sB + ShiftX) - state(sA + ShiftX)) * nx + (state(sB + ShiftY) - state(sA + ShiftY)) * ny +
+      hot(q + BaseSeparation)
+    val vn = (vBx - vAx) * nx + (vBy - vAy) * ny
+    val impulse = solveNormal(hot, k, q, s, vn, inverseH, contactSpeed, useBias, contacts.bouncing, contacts.records, c, 0)
+    // Products written left to right (see `solveNormal`).
+    vAx -= impulse * mA * nx; vAy -= impulse * mA * ny
+    vBx += impulse * mB * nx; vBy += impulse * mB * ny
+    if !useBias then
+      // Friction, as for any one-point contact.
+      val iA = masses(4 * c + 1); val iB = masses(4 * c + 3)
+      var wA = state(sA + AngularVelocity); var wB = state(sB + AngularVelocity)
+      val tx = -ny; val ty = nx
+      val rtA = hot(q + AnchorAX) * ty - hot(q + AnchorAY) * tx
+      val rtB = hot(q + AnchorBX) * ty - hot(q + AnchorBY) * tx
+      val vt = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB - wA * rtA)
+      val friction = solveFriction(hot, q, hot(k + Friction), vt)
+      vAx -= friction * mA * tx; vAy -= friction * mA * ty; wA -= friction * iA * rtA
+      vBx += friction * mB * tx; vBy += friction * mB * ty; wB += friction * iB * rtB
+      state(sA + AngularVelocity) = wA; state(sB + AngularVelocity) = wB
+    state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy
+    state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy
 
   /** The current separation of the point at q, normal (nx, ny), from its bodies' motion since the
     * step began: B's displacement relative to A's (dpx, dpy) and each body's turn (cosine, sine).
@@ -289,16 +343,21 @@ private[sims] object ContactConstraints:
           p += 1
       c += 1
 
-  /** The current separation of contact c's point at q, from the bodies' motion since the step began. */
-  private def separationNow(contacts: Contacts, c: Int, q: Int, bodies: SoftBodies): Double =
+  /** The current separation of contact c's point at q, from the motion of its bodies (their state
+    * in `state`) since the step began.
+    */
+  def separationNow(contacts: Contacts, c: Int, q: Int, state: Array[Double]): Double =
     val hot = contacts.hot
-    val state = bodies.state
     val k = contacts.offset(c)
     val sA = contacts.bodyA(c) * SoftBodies.Stride
     val sB = contacts.bodyB(c) * SoftBodies.Stride
-    separationAt(hot, q, hot(k + NormalX), hot(k + NormalY), state(sB + ShiftX) - state(sA + ShiftX),
-      state(sB + ShiftY) - state(sA + ShiftY), state(sA + TurnCos), state(sA + TurnSin), state(sB + TurnCos),
-      state(sB + TurnSin))
+    val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+    val dpx = state(sB + ShiftX) - state(sA + ShiftX)
+    val dpy = state(sB + ShiftY) - state(sA + ShiftY)
+    if contacts.centred(c) then dpx * nx + dpy * ny + hot(q + BaseSeparation)
+    else
+      separationAt(hot, q, nx, ny, dpx, dpy, state(sA + TurnCos), state(sA + TurnSin), state(sB + TurnCos),
+        state(sB + TurnSin))
 
   /** The change of the normal velocity of contact c's point at q over a substep h by gravity
     * and the forces alone.
@@ -385,7 +444,7 @@ private[sims] object ContactConstraints:
               val impact = if recorded < 0 then records(r + RelativeVelocity) + free else records(r + RelativeVelocity)
               val phi = if impact < 0 then math.min(1.0, math.abs(recorded) / (-impact * h)) else 0.0
               val speed = -impact - free * (phi - 0.5)
-              val gap = math.max(0.0, separationNow(contacts, c, q, bodies))
+              val gap = math.max(0.0, separationNow(contacts, c, q, bodies.state))
               val launch = math.sqrt(math.max(0.0, e * e * speed * speed + 2 * free / h * gap)) - 0.5 * free
               val target = -launch
               val total = math.max(accumulated - hot(q + NormalMass) * (vn + target), 0.0)

@@ -201,7 +201,7 @@ private[sims] object ContactTable:
   inline val AnchorAY = 1
   inline val AnchorBX = 2 // arm from B's centre
   inline val AnchorBY = 3
-  inline val BaseSeparation = 4 // separation minus n . (anchorB - anchorA)
+  inline val BaseSeparation = 4 // separation minus n . (anchorB - anchorA); a centred contact's: the separation
   inline val NormalMass = 5
   inline val TangentMass = 6
   inline val NormalImpulse = 7 // accumulated (and warm started)
@@ -319,6 +319,11 @@ private[sims] final class Contacts:
   var side: Array[Int] = new Array[Int](16)
   /** Per contact, whether both its shapes' contact events were on when it was made. */
   var reportsEvents: Array[Boolean] = new Array[Boolean](16)
+  /** Per contact, whether it is between two circles on their bodies' centres: its normal passes
+    * through both centres, so a turn of either body moves neither its separation nor, pushing
+    * along it, the bodies' spin (see [[ContactConstraints]]).
+    */
+  var centred: Array[Boolean] = new Array[Boolean](16)
   var offset: Array[Int] = new Array[Int](16)
   var coldOffset: Array[Int] = new Array[Int](16)
   var hot: Array[Double] = new Array[Double](16 * (Header + HotPoint))
@@ -404,6 +409,7 @@ private[sims] final class Contacts:
     System.arraycopy(from.keys, 0, keys, base, n); System.arraycopy(from.pointCount, 0, pointCount, base, n)
     System.arraycopy(from.ids, 0, ids, 2 * base, 2 * n); System.arraycopy(from.side, 0, side, base, n)
     System.arraycopy(from.reportsEvents, 0, reportsEvents, base, n)
+    System.arraycopy(from.centred, 0, centred, base, n)
     System.arraycopy(from.offset, 0, offset, base, n); System.arraycopy(from.coldOffset, 0, coldOffset, base, n)
     System.arraycopy(from.records, 0, records, base * RecordStride, n * RecordStride)
 
@@ -438,6 +444,7 @@ private[sims] final class Contacts:
     System.arraycopy(bodyA, 0, c.bodyA, 0, count); System.arraycopy(bodyB, 0, c.bodyB, 0, count)
     System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(ids, 0, c.ids, 0, 2 * count)
     System.arraycopy(side, 0, c.side, 0, count); System.arraycopy(reportsEvents, 0, c.reportsEvents, 0, count)
+    System.arraycopy(centred, 0, c.centred, 0, count)
     System.arraycopy(records, 0, c.records, 0, count * RecordStride)
     var n = 0
     while n < count do
@@ -453,6 +460,7 @@ private[sims] final class Contacts:
     keys = java.util.Arrays.copyOf(keys, capacity); pointCount = java.util.Arrays.copyOf(pointCount, capacity)
     ids = java.util.Arrays.copyOf(ids, 2 * capacity); side = java.util.Arrays.copyOf(side, capacity)
     reportsEvents = java.util.Arrays.copyOf(reportsEvents, capacity)
+    centred = java.util.Arrays.copyOf(centred, capacity)
     offset = java.util.Arrays.copyOf(offset, capacity)
     coldOffset = java.util.Arrays.copyOf(coldOffset, capacity)
     records = java.util.Arrays.copyOf(records, capacity * RecordStride)

@@ -26,33 +26,15 @@ private[sims] object ContactTouching:
     val state = bodies.state
     var c = from
     while c < until do
-      val sA = contacts.bodyA(c) * SoftBodies.Stride
-      val sB = contacts.bodyB(c) * SoftBodies.Stride
-      val k = contacts.offset(c)
-      val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       var touching = 0
       var p = 0
       while p < contacts.pointCount(c) do
         val q = contacts.hotPoint(c, p)
-        if hot(q + TotalNormalImpulse) > 0 || separation(hot, q, state, sA, sB, nx, ny) <= 0 then touching += 1
+        if hot(q + TotalNormalImpulse) > 0 || ContactConstraints.separationNow(contacts, c, q, state) <= 0 then
+          touching += 1
         p += 1
       points(c) = touching
       c += 1
-
-  /** The separation of the point at q at the end of the step: its arms turned by each body's turn
-    * since the start of the step (state at sA and sB), the bodies' displacement along the normal.
-    */
-  private inline def separation(hot: Array[Double], q: Int, state: Array[Double], sA: Int, sB: Int, nx: Double,
-      ny: Double): Double =
-    val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-    val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-    val armAX = state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy
-    val armAY = state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy
-    val armBX = state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy
-    val armBY = state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy
-    val gapX = state(sB + ShiftX) - state(sA + ShiftX) + armBX - armAX
-    val gapY = state(sB + ShiftY) - state(sA + ShiftY) + armBY - armAY
-    gapX * nx + gapY * ny + hot(q + BaseSeparation)
 
   /** Reports the touching contacts of `contacts`, as `measure` counted them, to `tracker`, in
     * contact order (those of a shape whose contact events were off when the contact was made
@@ -76,7 +58,6 @@ private[sims] object ContactTouching:
     val state = bodies.state
     val a = contacts.bodyA(c)
     val sA = a * SoftBodies.Stride
-    val sB = contacts.bodyB(c) * SoftBodies.Stride
     val k = contacts.offset(c)
     val nx = hot(k + NormalX); val ny = hot(k + NormalY)
     var touching = 0
@@ -87,7 +68,7 @@ private[sims] object ContactTouching:
     while p < contacts.pointCount(c) do
       val q = contacts.hotPoint(c, p)
       val pushed = hot(q + TotalNormalImpulse)
-      if separation(hot, q, state, sA, sB, nx, ny) <= 0 || pushed > 0 then
+      if ContactConstraints.separationNow(contacts, c, q, state) <= 0 || pushed > 0 then
         touching += 1
         val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
         sumX += bodies.startX(a) + state(sA + ShiftX) + (state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy)

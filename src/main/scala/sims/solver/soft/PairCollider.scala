@@ -88,7 +88,7 @@ private[sims] final class PairCollider:
     else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
       keeps(table.committed, last, a, b) then
       keep(last, a, b, key)
-    else if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
+    else if PairCollider.centred(functions, a, b) then
       val circleA = a.asInstanceOf[Circle]
       val circleB = b.asInstanceOf[Circle]
       CircleManifold.collide(circleA, circleB, speculativeDistance + timeStep * approach, manifold)
@@ -119,6 +119,7 @@ private[sims] final class PairCollider:
     val k = old.offset(last)
     val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0)
     contacts.side(c) = old.side(last)
+    contacts.centred(c) = old.centred(last)
     ShortCopy.doubles(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
     ShortCopy.doubles(old.cold, old.coldOffset(last), contacts.cold, contacts.coldOffset(c), ColdStride)
     ShortCopy.doubles(old.records, last * RecordStride, contacts.records, c * RecordStride, RecordStride)
@@ -182,6 +183,7 @@ private[sims] final class PairCollider:
     val contacts = target
     val c = start(contacts, circleA, circleB, key, manifold.normalX, manifold.normalY, 1, stiffnessOf(last))
     contacts.side(c) = manifold.polygonSide
+    contacts.centred(c) = true
     cachePlacements(contacts, c)
     if !aimAtImpact(contacts, c, circleA, circleB) then
       setPoint(contacts, c, 0, manifold.x(0), manifold.y(0), manifold.separation(0))
@@ -426,6 +428,7 @@ private[sims] final class PairCollider:
     contacts.bodyB(c) = b.body.index
     contacts.keys(c) = key
     contacts.reportsEvents(c) = a.enableContactEvents && b.enableContactEvents
+    contacts.centred(c) = false
     val k = contacts.offset(c)
     contacts.hot(k + NormalX) = nx
     contacts.hot(k + NormalY) = ny
@@ -441,6 +444,12 @@ private[sims] final class PairCollider:
     if last >= 0 then table.committed.records(last * RecordStride + Stiffness) else 0.0
 
 private[sims] object PairCollider:
+  /** Whether the collider makes the pair (a, b), with the narrowphase's `functions` for it, a
+    * contact of two circles on their bodies' centres ([[Contacts.centred]]).
+    */
+  def centred(functions: sims.collision.narrowphase.PairFunctions, a: Shape, b: Shape): Boolean =
+    functions != null && functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred
+
   /** Class pairs a shared collider remembers. */
   inline val RecentSize = 4
 

@@ -41,12 +41,10 @@ private[sims] final class SoftWorkspace extends sims.dynamics.CarriedState:
     val state = bodies.state
     IndexedSeq.tabulate(contacts.count) { c =>
       val a = contacts.bodyA(c)
-      val b = contacts.bodyB(c)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX)
       val ny = hot(k + NormalY)
       val sA = a * SoftBodies.Stride
-      val sB = b * SoftBodies.Stride
       val count = contacts.pointCount(c)
       val points = IndexedSeq.tabulate(count) { p =>
         val q = contacts.hotPoint(c, p)
@@ -54,16 +52,8 @@ private[sims] final class SoftWorkspace extends sims.dynamics.CarriedState:
         sims.geometry.Vector2D(bodies.startX(a) + state(sA + ShiftX) + state(sA + TurnCos) * rx - state(sA + TurnSin) * ry,
           bodies.startY(a) + state(sA + ShiftY) + state(sA + TurnSin) * rx + state(sA + TurnCos) * ry)
       }
-      val separations = IndexedSeq.tabulate(count) { p =>
-        val q = contacts.hotPoint(c, p)
-        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-        val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
-        val dx = state(sB + ShiftX) - state(sA + ShiftX) + (state(sB + TurnCos) * rBx - state(sB + TurnSin) * rBy) -
-          (state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy)
-        val dy = state(sB + ShiftY) - state(sA + ShiftY) + (state(sB + TurnSin) * rBx + state(sB + TurnCos) * rBy) -
-          (state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy)
-        dx * nx + dy * ny + hot(q + BaseSeparation)
-      }
+      val separations =
+        IndexedSeq.tabulate(count)(p => ContactConstraints.separationNow(contacts, c, contacts.hotPoint(c, p), state))
       def column(offset: Int) = IndexedSeq.tabulate(count)(p => hot(contacts.hotPoint(c, p) + offset))
       sims.collision.Contact(contacts.shapeA(c), contacts.shapeB(c), sims.geometry.Vector2D(nx, ny), points,
         separations, column(NormalImpulse), column(TangentImpulse), column(TotalNormalImpulse))
