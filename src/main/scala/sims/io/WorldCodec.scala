@@ -36,8 +36,8 @@ object WorldCodec:
     * soft step's own: it used the detector's; version 4 no kinematic bodies, damping, gravity
     * scales, ids or names, no contact-event switches, no weld, wheel or motor joints, no chain
     * segments, no joint limits, motors, springs or break limits, and two impulses per revolute
-    * or prismatic joint; version 5 no sleeping: every body awake; version 6 no mark of the
-    * contacts between two circles on their bodies' centres).
+    * or prismatic joint; version 5 no sleeping: every body awake; version 6 no contact's
+    * turnless sides).
     */
   val FormatVersion: Int = 7
 

@@ -296,8 +296,10 @@ private[io] object WorldReader:
       table.ids(2 * c) = in.readInt()
       table.ids(2 * c + 1) = in.readInt()
       table.side(c) = in.readInt()
-      // Before version 7 every contact's separation followed the general rule.
-      table.centred(c) = version >= 7 && in.readBoolean()
+      // Before version 7 every contact's separation followed the general rule: no side turnless.
+      table.turnless(c) = if version >= 7 then in.readByte() else 0
+      if table.turnless(c) < 0 || table.turnless(c) > ContactTable.Turnless then
+        throw IllegalArgumentException(s"a contact's turnless sides, ${table.turnless(c)}, are not 0 to 3 in the saved world")
       // Before version 5 a point's block had no ImpactGap (its last slot): it stays 0.
       ContactTable.load(table, c, () => in.readDouble(), ContactTable.savedPoint(version))
       for k <- 0 until ContactTable.ColdStride do table.cold(table.coldOffset(c) + k) = in.readDouble()

@@ -214,7 +214,7 @@ private[io] object WorldWriter:
           out.writeInt(table.ids(2 * c))
           out.writeInt(if table.pointCount(c) > 1 then table.ids(2 * c + 1) else 0)
           out.writeInt(table.side(c))
-          out.writeBoolean(table.centred(c))
+          out.writeByte(table.turnless(c))
           ContactTable.saved(table, c).foreach(out.writeDouble)
           // A contact has room for two points (ids, cold block); the slots of a missing one hold
           // whatever an earlier contact left there. Written as zeros: the same world, the same bytes.

@@ -276,6 +276,45 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     body.angularVelocity shouldBe 60.0 +- 1e-9
   }
 
+  test("a ball rolling on the ground, or spinning on a box, keeps its height: a turn moves no circle's outline") {
+    def heights(onBox: Boolean): (Double, Double) =
+      val world = World()
+      world.solver = SoftStep(workers = 1)
+      val ground = Rectangle(50, 0.5, 1)
+      ground.pos = Vector2D(0, -0.5)
+      val fixed = ground.asBody; fixed.fixed = true
+      world += fixed
+      val floor = if onBox then 0.2 else 0.0
+      if onBox then
+        val box = Rectangle(1, 0.1, 1)
+        box.pos = Vector2D(0, 0.1)
+        box.friction = 0
+        world += box.asBody
+      val ball = Circle(0.1, 1)
+      ball.pos = Vector2D(0, floor + 0.1)
+      // On the box without friction, so that it spins in place; on the ground it rolls.
+      if onBox then ball.friction = 0
+      val body = ball.asBody
+      world += body
+      for _ <- 1 to 60 do world.step()
+      val resting = body.pos.y
+      if onBox then body.angularVelocity = 50 else { body.linearVelocity = Vector2D(5, 0); body.angularVelocity = -50 }
+      var lowest, highest = resting
+      for _ <- 1 to 120 do
+        world.step()
+        lowest = math.min(lowest, body.pos.y)
+        highest = math.max(highest, body.pos.y)
+      (resting - lowest, highest - resting)
+    // Turned with the ball, its arm would leave the line of contact, and the ball sank by up to
+    // r (1 - cos turn) within each step: 7.5 mm rolling at 5 m/s.
+    for onBox <- Seq(false, true) do
+      val (sank, rose) = heights(onBox)
+      withClue(s"on the box: $onBox") {
+        sank should be < 1e-4
+        rose should be < 1e-4
+      }
+  }
+
   test("the direct solver makes every joint of a chain exact: after a relax pass no link moves apart") {
     val world = World()
     world.gravity = Vector2D.Null

@@ -29,6 +29,9 @@ private[sims] object ShapeKind:
   * narrowphase's table of built-in functions.
   */
 private[sims] enum PairKind(val first: ShapeKind, val second: ShapeKind):
+  /** Which sides are circles: 1 the first, 2 the second. */
+  val circleSides: Int = (if first == ShapeKind.Circle then 1 else 0) | (if second == ShapeKind.Circle then 2 else 0)
+
   case CircleCircle extends PairKind(ShapeKind.Circle, ShapeKind.Circle)
   case PolygonPolygon extends PairKind(ShapeKind.Polygon, ShapeKind.Polygon)
   case PolygonCircle extends PairKind(ShapeKind.Polygon, ShapeKind.Circle)

@@ -10,8 +10,9 @@ import sims.solver.soft.SoftBodies.*
   * normal n (from A to B) and tangent t = n.leftNormal:
   *   C     = s, the separation, >= 0; during the substeps s = s0 + n . (dB(point) - dA(point))
   *           with d(point) = dp + R(dAngle) r - r the point's displacement since the start
-  *           (for two circles on their bodies' centres, `Contacts.centred`, d = dp: their arms
-  *           lie along n, so r x n = 0 and no turn moves an outline along n)
+  *           (R(dAngle) = 1 for a turnless side, `Contacts.turnless`: a circle on its body's
+  *           centre, whose arm lies along n, so that r x n = 0 and no turn moves its outline
+  *           along n, or a fixed body)
   *   Cdot  = vn = n . (vB + wB x rB - vA - wA x rA)
   *   K     = 1/mA + 1/mB + (rA x n)^2 / IA + (rB x n)^2 / IB     (its inverse: the normal mass)
   *   lambda = -normalMass massScale (vn + bias) - impulseScale lambdaAcc, then lambdaAcc >= 0
@@ -58,7 +59,7 @@ private[sims] object ContactConstraints:
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val tx = -ny; val ty = nx
       val sA = a * SoftBodies.Stride; val sB = b * SoftBodies.Stride
-      val centred = contacts.centred(c)
+      val turnless = contacts.turnless(c) == Turnless
       var p = 0
       while p < contacts.pointCount(c) do
         val q = contacts.hotPoint(c, p)
@@ -66,8 +67,8 @@ private[sims] object ContactConstraints:
         val rBx = hot(q + AnchorBX); val rBy = hot(q + AnchorBY)
         val separation = cold(contacts.coldPoint(c, p) + Separation)
         val kNormal =
-          if centred then
-            // Arms along the normal: no moment about it, and a turn moves no outline along it.
+          if turnless then
+            // No turn on either side: no moment about the normal, and no outline moved along it.
             hot(q + BaseSeparation) = separation
             mA + mB
           else
@@ -135,8 +136,8 @@ private[sims] object ContactConstraints:
     * second point sees its first point's impulse through their coupling, 1/mA + 1/mB +
     * (rA0 x n)(rA1 x n) / IA + (rB0 x n)(rB1 x n) / IB, the change that impulse makes to its
     * velocity, and the bodies take both impulses at once: Gauss-Seidel over the points as
-    * before, with a chain half as long. A contact of two centred circles takes a shorter way
-    * (`solveCentred`).
+    * before, with a chain half as long. A contact turnless on both sides takes a shorter way
+    * (`solveTurnless`).
     */
   def solve(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int, inverseH: Double,
       contactSpeed: Double, useBias: Boolean): Unit =
@@ -148,7 +149,8 @@ private[sims] object ContactConstraints:
     var n = from
     while n < until do
       val c = order(n)
-      if contacts.centred(c) then solveCentred(contacts, state, c, inverseH, contactSpeed, useBias)
+      val turnless = contacts.turnless(c)
+      if turnless == Turnless then solveTurnless(contacts, state, c, inverseH, contactSpeed, useBias)
       else
         val sA = contacts.bodyA(c) * SoftBodies.Stride
         val sB = contacts.bodyB(c) * SoftBodies.Stride
@@ -160,8 +162,11 @@ private[sims] object ContactConstraints:
         // current separations.
         val dpx = state(sB + ShiftX) - state(sA + ShiftX)
         val dpy = state(sB + ShiftY) - state(sA + ShiftY)
-        val cosA = state(sA + TurnCos); val sinA = state(sA + TurnSin)
-        val cosB = state(sB + TurnCos); val sinB = state(sB + TurnSin)
+        var cosA = state(sA + TurnCos); var sinA = state(sA + TurnSin)
+        var cosB = state(sB + TurnCos); var sinB = state(sB + TurnSin)
+        if turnless != 0 then // a circle on a moving body: its turn moves no outline along the normal
+          if (turnless & TurnlessA) != 0 then { cosA = 1.0; sinA = 0.0 }
+          if (turnless & TurnlessB) != 0 then { cosB = 1.0; sinB = 0.0 }
         val k = contacts.offset(c)
         val nx = hot(k + NormalX); val ny = hot(k + NormalY)
         val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
@@ -218,14 +223,15 @@ private[sims] object ContactConstraints:
         state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
       n += 1
 
-  /** `solve` for contact c of two circles on their bodies' centres: one point, its arms along
-    * the normal, so the normal row neither reads nor changes the bodies' spin, and its
-    * separation is the centres' approach alone (a turned arm would move a circle's outline off
-    * the point: a spinning ball would seem to part from what it rests on). A method of its own,
+  /** `solve` for contact c turnless on both sides (two circles on their bodies' centres, or
+    * such a circle and a fixed body): one point, its normal row neither reads nor changes the
+    * bodies' spin, and its separation is the bodies' approach alone (an arm turned with a
+    * circle would move its outline off the point: a spinning ball would seem to part from
+    * what it rests on). A method of its own,
     * not inlined into the loop: the loop's other contacts' code already holds as many inlined
     * calls as the compiler allows.
     */
-  private def solveCentred(contacts: Contacts, state: Array[Double], c: Int, inverseH: Double,
+  private def solveTurnless(contacts: Contacts, state: Array[Double], c: Int, inverseH: Double,
       contactSpeed: Double, useBias: Boolean): Unit =
     val hot = contacts.hot
     val masses = contacts.masses
@@ -354,10 +360,13 @@ private[sims] object ContactConstraints:
     val nx = hot(k + NormalX); val ny = hot(k + NormalY)
     val dpx = state(sB + ShiftX) - state(sA + ShiftX)
     val dpy = state(sB + ShiftY) - state(sA + ShiftY)
-    if contacts.centred(c) then dpx * nx + dpy * ny + hot(q + BaseSeparation)
+    val turnless = contacts.turnless(c)
+    if turnless == Turnless then dpx * nx + dpy * ny + hot(q + BaseSeparation)
     else
-      separationAt(hot, q, nx, ny, dpx, dpy, state(sA + TurnCos), state(sA + TurnSin), state(sB + TurnCos),
-        state(sB + TurnSin))
+      val turnsA = (turnless & TurnlessA) == 0; val turnsB = (turnless & TurnlessB) == 0
+      separationAt(hot, q, nx, ny, dpx, dpy, if turnsA then state(sA + TurnCos) else 1.0,
+        if turnsA then state(sA + TurnSin) else 0.0, if turnsB then state(sB + TurnCos) else 1.0,
+        if turnsB then state(sB + TurnSin) else 0.0)
 
   /** The change of the normal velocity of contact c's point at q over a substep h by gravity
     * and the forces alone.

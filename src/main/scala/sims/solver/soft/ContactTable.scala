@@ -196,12 +196,23 @@ private[sims] object ContactTable:
   inline val MassScale = 4
   inline val ImpulseScale = 5
   inline val Header = 6
+
+  /** A contact's side A is a circle on its body's centre (`Contacts.turnless`), or a fixed body
+    * opposite such a circle: a circle's arm lies along the normal (its manifolds put the point
+    * on the line from its centre along the normal), so its turn moves no outline along the
+    * normal and a push along the normal gives it no spin; a fixed body does not turn.
+    */
+  inline val TurnlessA = 1
+  /** As [[TurnlessA]], for side B. */
+  inline val TurnlessB = 2
+  /** Both sides turnless: the normal row has no turn at all, and the passes take it a short way. */
+  inline val Turnless = 3
   // Offsets in a point's hot block.
   inline val AnchorAX = 0 // arm from A's centre at the start of the step
   inline val AnchorAY = 1
   inline val AnchorBX = 2 // arm from B's centre
   inline val AnchorBY = 3
-  inline val BaseSeparation = 4 // separation minus n . (anchorB - anchorA); a centred contact's: the separation
+  inline val BaseSeparation = 4 // separation minus n . (anchorB - anchorA); a turnless contact's: the separation
   inline val NormalMass = 5
   inline val TangentMass = 6
   inline val NormalImpulse = 7 // accumulated (and warm started)
@@ -319,11 +330,10 @@ private[sims] final class Contacts:
   var side: Array[Int] = new Array[Int](16)
   /** Per contact, whether both its shapes' contact events were on when it was made. */
   var reportsEvents: Array[Boolean] = new Array[Boolean](16)
-  /** Per contact, whether it is between two circles on their bodies' centres: its normal passes
-    * through both centres, so a turn of either body moves neither its separation nor, pushing
-    * along it, the bodies' spin (see [[ContactConstraints]]).
+  /** Per contact, which of its sides turn none of its points along its normal
+    * ([[ContactTable.TurnlessA]], [[ContactTable.TurnlessB]]; see [[ContactConstraints]]).
     */
-  var centred: Array[Boolean] = new Array[Boolean](16)
+  var turnless: Array[Byte] = new Array[Byte](16)
   var offset: Array[Int] = new Array[Int](16)
   var coldOffset: Array[Int] = new Array[Int](16)
   var hot: Array[Double] = new Array[Double](16 * (Header + HotPoint))
@@ -409,7 +419,7 @@ private[sims] final class Contacts:
     System.arraycopy(from.keys, 0, keys, base, n); System.arraycopy(from.pointCount, 0, pointCount, base, n)
     System.arraycopy(from.ids, 0, ids, 2 * base, 2 * n); System.arraycopy(from.side, 0, side, base, n)
     System.arraycopy(from.reportsEvents, 0, reportsEvents, base, n)
-    System.arraycopy(from.centred, 0, centred, base, n)
+    System.arraycopy(from.turnless, 0, turnless, base, n)
     System.arraycopy(from.offset, 0, offset, base, n); System.arraycopy(from.coldOffset, 0, coldOffset, base, n)
     System.arraycopy(from.records, 0, records, base * RecordStride, n * RecordStride)
 
@@ -444,7 +454,7 @@ private[sims] final class Contacts:
     System.arraycopy(bodyA, 0, c.bodyA, 0, count); System.arraycopy(bodyB, 0, c.bodyB, 0, count)
     System.arraycopy(keys, 0, c.keys, 0, count); System.arraycopy(ids, 0, c.ids, 0, 2 * count)
     System.arraycopy(side, 0, c.side, 0, count); System.arraycopy(reportsEvents, 0, c.reportsEvents, 0, count)
-    System.arraycopy(centred, 0, c.centred, 0, count)
+    System.arraycopy(turnless, 0, c.turnless, 0, count)
     System.arraycopy(records, 0, c.records, 0, count * RecordStride)
     var n = 0
     while n < count do
@@ -460,7 +470,7 @@ private[sims] final class Contacts:
     keys = java.util.Arrays.copyOf(keys, capacity); pointCount = java.util.Arrays.copyOf(pointCount, capacity)
     ids = java.util.Arrays.copyOf(ids, 2 * capacity); side = java.util.Arrays.copyOf(side, capacity)
     reportsEvents = java.util.Arrays.copyOf(reportsEvents, capacity)
-    centred = java.util.Arrays.copyOf(centred, capacity)
+    turnless = java.util.Arrays.copyOf(turnless, capacity)
     offset = java.util.Arrays.copyOf(offset, capacity)
     coldOffset = java.util.Arrays.copyOf(coldOffset, capacity)
     records = java.util.Arrays.copyOf(records, capacity * RecordStride)

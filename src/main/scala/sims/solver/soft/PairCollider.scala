@@ -2,7 +2,7 @@ package sims.solver.soft
 
 import sims.collision.{Collision, PairKey}
 import sims.collision.manifold.{CircleManifold, Manifold}
-import sims.collision.narrowphase.{Narrowphase, PairKind, RecentMethods}
+import sims.collision.narrowphase.{Narrowphase, PairFunctions, PairKind, RecentMethods}
 import sims.dynamics.{Circle, Shape, World}
 import sims.geometry.PortableMath
 import sims.solver.ShortCopy
@@ -87,8 +87,8 @@ private[sims] final class PairCollider:
       if collision != null then addCollision(collision, key, last)
     else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
       keeps(table.committed, last, a, b) then
-      keep(last, a, b, key)
-    else if PairCollider.centred(functions, a, b) then
+      keep(last, a, b, key, functions)
+    else if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
       val circleA = a.asInstanceOf[Circle]
       val circleB = b.asInstanceOf[Circle]
       CircleManifold.collide(circleA, circleB, speculativeDistance + timeStep * approach, manifold)
@@ -96,7 +96,7 @@ private[sims] final class PairCollider:
     else
       functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
         speculativeDistance + timeStep * approach, linearSlop, manifold)
-      if manifold.pointCount > 0 then addManifold(a, b, key, last)
+      if manifold.pointCount > 0 then addManifold(a, b, key, last, PairCollider.turnless(functions, a, b))
 
   /** Whether shapes a and b touch as the soft step counts it: their manifold has a point. */
   def touches(a: Shape, b: Shape): Boolean =
@@ -117,9 +117,8 @@ private[sims] final class PairCollider:
     val contacts = target
     val points = old.pointCount(last)
     val k = old.offset(last)
-    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0)
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0, old.turnless(last))
     contacts.side(c) = old.side(last)
-    contacts.centred(c) = old.centred(last)
     ShortCopy.doubles(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
     ShortCopy.doubles(old.cold, old.coldOffset(last), contacts.cold, contacts.coldOffset(c), ColdStride)
     ShortCopy.doubles(old.records, last * RecordStride, contacts.records, c * RecordStride, RecordStride)
@@ -162,9 +161,9 @@ private[sims] final class PairCollider:
   /** Appends the manifold of shapes (a, b) as a contact, warm started from the last step's
     * contact `last` (or -1) point by point through the feature ids.
     */
-  private def addManifold(a: Shape, b: Shape, key: Long, last: Int): Unit =
+  private def addManifold(a: Shape, b: Shape, key: Long, last: Int, turnless: Int): Unit =
     val contacts = target
-    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount, stiffnessOf(last))
+    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount, stiffnessOf(last), turnless)
     contacts.side(c) = manifold.polygonSide
     cachePlacements(contacts, c)
     var p = 0
@@ -181,9 +180,8 @@ private[sims] final class PairCollider:
     */
   private def addCircles(circleA: Circle, circleB: Circle, key: Long, last: Int): Unit =
     val contacts = target
-    val c = start(contacts, circleA, circleB, key, manifold.normalX, manifold.normalY, 1, stiffnessOf(last))
+    val c = start(contacts, circleA, circleB, key, manifold.normalX, manifold.normalY, 1, stiffnessOf(last), Turnless)
     contacts.side(c) = manifold.polygonSide
-    contacts.centred(c) = true
     cachePlacements(contacts, c)
     if !aimAtImpact(contacts, c, circleA, circleB) then
       setPoint(contacts, c, 0, manifold.x(0), manifold.y(0), manifold.separation(0))
@@ -301,13 +299,14 @@ private[sims] final class PairCollider:
   /** Appends the last step's contact `last` again: the same normal, ids and impulses, its
     * separations updated from the bodies' motion.
     */
-  private def keep(last: Int, a: Shape, b: Shape, key: Long): Unit =
+  private def keep(last: Int, a: Shape, b: Shape, key: Long, functions: PairFunctions): Unit =
+    val circles = PairCollider.centredCircles(functions, a, b)
     val old = table.committed
     val contacts = target
     val points = old.pointCount(last)
     val k = old.offset(last)
     val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points,
-      old.records(last * RecordStride + Stiffness))
+      old.records(last * RecordStride + Stiffness), PairCollider.turnless(circles, a, b))
     contacts.side(c) = old.side(last)
     val hot = contacts.hot
     val cold = contacts.cold
@@ -317,8 +316,12 @@ private[sims] final class PairCollider:
     val ib = contacts.bodyB(c)
     val turnA = bodies.startAngle(ia) - old.cold(oldCold + CachedAngleA)
     val turnB = bodies.startAngle(ib) - old.cold(oldCold + CachedAngleB)
-    val cA = PairCollider.cosine(turnA); val sA = PairCollider.sine(turnA)
-    val cB = PairCollider.cosine(turnB); val sB = PairCollider.sine(turnB)
+    // A circle's arm is not turned: its outline stays where it was along the normal. (A fixed
+    // body's is: the user may have turned it since.)
+    val turnsA = (circles & TurnlessA) == 0
+    val turnsB = (circles & TurnlessB) == 0
+    val cA = if turnsA then PairCollider.cosine(turnA) else 1.0; val sA = if turnsA then PairCollider.sine(turnA) else 0.0
+    val cB = if turnsB then PairCollider.cosine(turnB) else 1.0; val sB = if turnsB then PairCollider.sine(turnB) else 0.0
     val nx = old.hot(k + NormalX); val ny = old.hot(k + NormalY)
     var p = 0
     while p < points do
@@ -389,7 +392,8 @@ private[sims] final class PairCollider:
       val contacts = target
       val nx = collision.normalX
       val ny = collision.normalY
-      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count, stiffnessOf(last))
+      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count, stiffnessOf(last),
+        PairCollider.turnless(null, collision.shape1, collision.shape2))
       contacts.side(c) = -1
       val separation = -Collision.overlapAlong(collision.shape1, collision.shape2, nx, ny)
       var p = 0
@@ -418,7 +422,7 @@ private[sims] final class PairCollider:
     * classic step).
     */
   private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double, points: Int,
-      stiffness: Double): Int =
+      stiffness: Double, turnless: Int): Int =
     val c = contacts.add(points)
     // Storing a reference costs the garbage collector's write barrier, and the slot usually holds
     // these shapes already: a generation's slots are reused every other step, in much the same order.
@@ -428,7 +432,8 @@ private[sims] final class PairCollider:
     contacts.bodyB(c) = b.body.index
     contacts.keys(c) = key
     contacts.reportsEvents(c) = a.enableContactEvents && b.enableContactEvents
-    contacts.centred(c) = false
+    // Both sides turnless only for one point (two fixed bodies never meet).
+    contacts.turnless(c) = (if turnless == Turnless && points != 1 then 0 else turnless).toByte
     val k = contacts.offset(c)
     contacts.hot(k + NormalX) = nx
     contacts.hot(k + NormalY) = ny
@@ -444,11 +449,27 @@ private[sims] final class PairCollider:
     if last >= 0 then table.committed.records(last * RecordStride + Stiffness) else 0.0
 
 private[sims] object PairCollider:
-  /** Whether the collider makes the pair (a, b), with the narrowphase's `functions` for it, a
-    * contact of two circles on their bodies' centres ([[Contacts.centred]]).
+  /** The turnless sides ([[ContactTable.TurnlessA]], [[ContactTable.TurnlessB]]) of a contact of
+    * shapes a and b made by the narrowphase's `functions` for them (null: a user's kind, whose
+    * points may lie anywhere): a circle of a built-in kind on its body's centre, or a fixed body.
     */
-  def centred(functions: sims.collision.narrowphase.PairFunctions, a: Shape, b: Shape): Boolean =
-    functions != null && functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred
+  def turnless(functions: PairFunctions, a: Shape, b: Shape): Int = turnless(centredCircles(functions, a, b), a, b)
+
+  /** [[turnless]] from the pair's `centredCircles`. */
+  def turnless(circles: Int, a: Shape, b: Shape): Int =
+    // A fixed side only counts opposite a circle: what the short way needs. Elsewhere its turn,
+    // 0 within a step, needs no mark, and the general row's common case stays unmarked.
+    if circles == TurnlessA && b.body.fixed || circles == TurnlessB && a.body.fixed then Turnless else circles
+
+  /** The sides of a contact of shapes a and b made by `functions` that are circles of a built-in
+    * kind on their bodies' centres, as [[turnless]]'s bits.
+    */
+  def centredCircles(functions: PairFunctions, a: Shape, b: Shape): Int =
+    val sides = if functions == null then 0 else functions.kind.circleSides
+    if sides == 0 then 0
+    else
+      (if (sides & 1) != 0 && a.body.allCentred then TurnlessA else 0) |
+        (if (sides & 2) != 0 && b.body.allCentred then TurnlessB else 0)
 
   /** Class pairs a shared collider remembers. */
   inline val RecentSize = 4
