@@ -227,9 +227,8 @@ private[sims] object ContactConstraints:
     * such a circle and a fixed body): one point, its normal row neither reads nor changes the
     * bodies' spin, and its separation is the bodies' approach alone (an arm turned with a
     * circle would move its outline off the point: a spinning ball would seem to part from
-    * what it rests on). A method of its own,
-    * not inlined into the loop: the loop's other contacts' code already holds as many inlined
-    * calls as the compiler allows.
+    * what it rests on). A method of its own, not inlined into the loop: the loop's other
+    * contacts' code already holds as many inlined calls as the compiler allows.
     */
   private def solveTurnless(contacts: Contacts, state: Array[Double], c: Int, inverseH: Double,
       contactSpeed: Double, useBias: Boolean): Unit =
