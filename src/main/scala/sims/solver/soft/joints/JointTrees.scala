@@ -3,6 +3,7 @@ package sims.solver.soft.joints
 import scala.collection.mutable.ArrayBuffer
 import sims.solver.soft.{Contacts, SoftBodies, SoftContext}
 import sims.solver.soft.SoftBodies.*
+import JointTrees.Plan
 
 /** The soft step's direct solver for joints that form trees (a chain, a pendulum, a ragdoll):
   * in every pass it solves all the tree's joint rows at once, exactly, in time linear in the
@@ -34,41 +35,51 @@ private[sims] final class JointTrees:
   private val direct = ArrayBuffer.empty[JointConstraint]
   private val rows = JointRows()
   // Per direct joint t: its moving bodies (-1 when fixed), its bodies' indices (fixed ones
-  // too: a fixed body may move at a given velocity), rows, Jacobians (k x 3 for body 1 at
-  // 12 t, for body 2 at 12 t + 6, written by the joints' `rowsAt`) and errors (at 2 t).
+  // too: a fixed body may move at a given velocity) and rows.
   private var body1, body2, index1, index2, rowCount = new Array[Int](0)
-  private var jacobians = new Array[Double](0)
-  // Per direct joint t: its constraint's accumulated impulses (the passes read and write them).
-  private var impulses = new Array[Array[Double]](0)
-  private var positionError = new Array[Double](0)
   // The elimination tree, nodes in breadth-first order from each root: kind (body or joint),
-  // the body index or joint number, size, parent node (-1 for a root), and the offset in
-  // `jacobians` of the block between the node and its parent (k x 3: the joint's rows for the
-  // body).
+  // the body index or joint number, size, parent node (-1 for a root), and where the block of
+  // the body of the pair (node, parent) starts in its joint's rows (0 for body 1, 6 for body 2).
   private var nodeCount = 0
   private var nodeIsJoint = new Array[Boolean](0)
-  private var nodeRef, nodeSize, nodeParent, nodeJacobian = new Array[Int](0)
-  // Per node (see `eliminate`): D, symmetric, its upper triangle at 6 node; the factor kept for
-  // the substitution (k x 3, at 6 node); the right side z, w = D^-1 z and the solution x, at 3 node.
-  private var d, factor = new Array[Double](0)
-  private var z, w, x = new Array[Double](0)
-  // Per node, for this step, at 4 node: a body node's mass and moment of inertia; a joint
-  // node's bodies' inverse masses and moments, body 1's then body 2's.
-  private var masses = new Array[Double](0)
+  private var nodeRef, nodeSize, nodeParent, nodeSide = new Array[Int](0)
   // Folding (see `fold`): whether a body node is folded into its joints; per joint node, the node
   // it is eliminated into and which of its joint's bodies are folded (1: body 1, 2: body 2, 3:
-  // both); per joint node eliminated into a joint, the block between them (k x k', at 4 node).
+  // both).
   private var nodeFolded = new Array[Boolean](0)
   private var nodeAbove, nodeFolds, childCount = new Array[Int](0)
-  private var link = new Array[Double](0)
+  private var nodeSlot = new Array[Int](0) // see `planSlots`: -1 for a folded body
   // The trees: tree k's nodes are treeStart(k) until treeStart(k + 1); whether something else
   // acts on it this step (see `markTouched`).
   private var treeCount = 0
   private var treeStart = new Array[Int](1)
   // The nodes the passes visit (all but the folded bodies, which have nothing of their own to
-  // solve), in node order: tree k's are live(liveStart(k) until liveStart(k + 1)).
-  private var live = new Array[Int](0)
+  // solve) are numbered in node order, as slots: tree k's are liveStart(k) until liveStart(k + 1).
+  // Every array the passes read is by slot, so that the passes walk them in order, and the
+  // loops' index checks on them can be hoisted. Per slot s, from Plan.Stride s (see `Plan`):
+  // the node's joint number or body index, its size (a joint's rows, 3 for a body), the slot it
+  // is eliminated into (-1 for a root), the offsets in `jacobians` of the block between it and
+  // that slot (k x 3: the joint's rows for the body) and of the block beyond a folded body (the
+  // joint above's rows for it, -1 unless eliminated into a joint), its folds, and its bodies'
+  // offsets in the state (body 1's and body 2's for a joint).
   private var liveStart = new Array[Int](1)
+  private var liveCount = 0
+  private var plan = new Array[Int](0)
+  // Per slot: Jacobians (k x 3 for body 1 at 12 s, for body 2 at 12 s + 6, written by the
+  // joints' `rowsAt`), errors (at 2 s) and the constraint's accumulated impulses (the passes
+  // read and write them).
+  private var jacobians = new Array[Double](0)
+  private var positionError = new Array[Double](0)
+  private var impulses = new Array[Array[Double]](0)
+  // Per slot (see `eliminate`): D, symmetric, its upper triangle at 6 s; the factor kept for the
+  // substitution (k x 3, at 6 s); the right side z, w = D^-1 z and the solution x, at 3 s; per
+  // joint eliminated into a joint, the block between them (k x k', at 4 s).
+  private var d, factor = new Array[Double](0)
+  private var z, w, x = new Array[Double](0)
+  private var link = new Array[Double](0)
+  // Per slot, for this step, at 4 s: a body's mass and moment of inertia; a joint's bodies'
+  // inverse masses and moments, body 1's then body 2's.
+  private var masses = new Array[Double](0)
   private var treeTouched = new Array[Boolean](0)
   // The joints (and their bodies' indices, whether each moves, rows) the trees were laid out
   // for: while they stay the same, so do the trees (see `sameLayout`).
@@ -191,6 +202,7 @@ private[sims] final class JointTrees:
     while j < joints.length do { joints(j).inTree = false; j += 1 }
     nodeCount = 0
     treeCount = 0
+    liveCount = 0
     laidOutCount = -1
 
   /** A body's index if it moves (has a finite mass), else -1. */
@@ -214,10 +226,6 @@ private[sims] final class JointTrees:
     if body1.length < joints then
       body1 = new Array[Int](2 * joints); body2 = new Array[Int](2 * joints); rowCount = new Array[Int](2 * joints)
       index1 = new Array[Int](2 * joints); index2 = new Array[Int](2 * joints)
-      jacobians = new Array[Double](24 * joints)
-      positionError = new Array[Double](4 * joints)
-      impulses = new Array[Array[Double]](2 * joints)
-    java.util.Arrays.fill(impulses.asInstanceOf[Array[AnyRef]], joints, impulses.length, null) // no joint that left
     var t = 0
     while t < joints do
       body1(t) = moving(direct(t).joint.node1, bodies)
@@ -225,7 +233,6 @@ private[sims] final class JointTrees:
       index1(t) = direct(t).joint.node1.index
       index2(t) = direct(t).joint.node2.index
       rowCount(t) = direct(t).directRows
-      impulses(t) = direct(t).impulse
       t += 1
     // Incidence lists of the bodies (joints in order), in compressed arrays.
     val n = bodies.count
@@ -253,14 +260,17 @@ private[sims] final class JointTrees:
       val room = 2 * capacity
       nodeIsJoint = new Array[Boolean](room)
       nodeRef = new Array[Int](room); nodeSize = new Array[Int](room); nodeParent = new Array[Int](room)
-      nodeJacobian = new Array[Int](room)
+      nodeSide = new Array[Int](room)
+      nodeFolded = new Array[Boolean](room)
+      nodeAbove = new Array[Int](room); nodeFolds = new Array[Int](room); childCount = new Array[Int](room)
+      nodeSlot = new Array[Int](room)
+      plan = new Array[Int](Plan.Stride * room)
+      jacobians = new Array[Double](12 * room); positionError = new Array[Double](2 * room)
+      impulses = new Array[Array[Double]](room)
       d = new Array[Double](6 * room); factor = new Array[Double](6 * room)
       z = new Array[Double](3 * room); w = new Array[Double](3 * room); x = new Array[Double](3 * room)
-      masses = new Array[Double](4 * room)
-      nodeFolded = new Array[Boolean](room)
-      live = new Array[Int](room)
-      nodeAbove = new Array[Int](room); nodeFolds = new Array[Int](room); childCount = new Array[Int](room)
       link = new Array[Double](4 * room)
+      masses = new Array[Double](4 * room)
     java.util.Arrays.fill(bodyNode, 0, n, -1)
     if jointSeen.length < joints then jointSeen = new Array[Boolean](2 * joints)
     java.util.Arrays.fill(jointSeen, 0, joints, false)
@@ -287,7 +297,7 @@ private[sims] final class JointTrees:
     treeStart(treeCount) = nodeCount
     if treeTouched.length < treeCount then treeTouched = new Array[Boolean](2 * treeCount)
     fold()
-    listLive()
+    planSlots()
 
   /** Folds every body that is not a tree's root and holds at most one joint below it (a chain's
     * link, a leaf) into its joints: its mass matrix is diagonal, so it is eliminated first, at no
@@ -318,9 +328,12 @@ private[sims] final class JointTrees:
 
   private def folded(body: Int): Boolean = body >= 0 && nodeFolded(bodyNode(body))
 
-  /** Lists each tree's nodes that are not folded, in node order (see `live`). */
-  private def listLive(): Unit =
+  /** Numbers each tree's nodes that are not folded as slots, in node order, and writes their
+    * plan (see `plan`), with each joint's accumulated impulses.
+    */
+  private def planSlots(): Unit =
     if liveStart.length < treeCount + 1 then liveStart = new Array[Int](2 * (treeCount + 1))
+    val slotOf = nodeSlot
     var count = 0
     var tree = 0
     while tree < treeCount do
@@ -328,11 +341,41 @@ private[sims] final class JointTrees:
       var node = treeStart(tree)
       while node < treeStart(tree + 1) do
         if !nodeFolded(node) then
-          live(count) = node
+          slotOf(node) = count
           count += 1
+        else slotOf(node) = -1
         node += 1
       tree += 1
     liveStart(treeCount) = count
+    liveCount = count
+    java.util.Arrays.fill(impulses.asInstanceOf[Array[AnyRef]], 0, impulses.length, null) // no joint that left
+    var node = 0
+    while node < nodeCount do
+      val slot = slotOf(node)
+      if slot >= 0 then
+        val o = Plan.Stride * slot
+        val ref = nodeRef(node)
+        plan(o + Plan.Ref) = ref
+        plan(o + Plan.Size) = nodeSize(node)
+        plan(o + Plan.Over) = -1
+        if nodeIsJoint(node) then
+          val above = nodeAbove(node)
+          plan(o + Plan.Above) = if above >= 0 then slotOf(above) else -1
+          plan(o + Plan.Block) = if nodeParent(node) >= 0 then 12 * slot + nodeSide(node) else -1
+          if above >= 0 && nodeIsJoint(above) then
+            plan(o + Plan.Over) = 12 * slotOf(above) + nodeSide(nodeParent(node))
+          plan(o + Plan.Folds) = nodeFolds(node)
+          plan(o + Plan.State1) = index1(ref) * SoftBodies.Stride
+          plan(o + Plan.State2) = index2(ref) * SoftBodies.Stride
+          impulses(slot) = direct(ref).impulse
+        else
+          val parent = nodeParent(node)
+          plan(o + Plan.Above) = if parent >= 0 then slotOf(parent) else -1
+          plan(o + Plan.Block) = if parent >= 0 then 12 * slotOf(parent) + nodeSide(node) else -1
+          plan(o + Plan.Folds) = 0
+          plan(o + Plan.State1) = ref * SoftBodies.Stride
+          plan(o + Plan.State2) = 0
+      node += 1
 
   /** The root of the tree holding `element` (a body b < n or a joint n + t): its joint to the
     * ground if it has one, else its centre, the middle of a longest path, found by two sweeps
@@ -422,13 +465,13 @@ private[sims] final class JointTrees:
     nodeRef(node) = ref
     nodeSize(node) = size
     nodeParent(node) = parent
-    // The joint's rows for the body of the pair (node, parent): body 1's block or body 2's.
-    nodeJacobian(node) =
-      if parent < 0 then -1
+    // The joint's rows for the body of the pair (node, parent): body 1's block (0) or body 2's (6).
+    nodeSide(node) =
+      if parent < 0 then 0
       else
         val joint = if isJoint then ref else nodeRef(parent)
         val body = if isJoint then nodeRef(parent) else ref
-        12 * joint + (if body1(joint) == body then 0 else 6)
+        if body1(joint) == body then 0 else 6
     nodeCount += 1
     node
 
@@ -480,22 +523,19 @@ private[sims] final class JointTrees:
         axialCount += 1
       t += 1
 
-  /** Each node's masses for this step's passes (see `masses`; a folded body's are not used:
-    * its joints' inverses are).
-    */
+  /** Each slot's masses for this step's passes (see `masses`). */
   private def takeMasses(bodies: SoftBodies): Unit =
-    var node = 0
-    while node < nodeCount do
-      val m = 4 * node
-      if nodeIsJoint(node) then
-        val joint = nodeRef(node)
-        masses(m) = bodies.invMass(index1(joint)); masses(m + 1) = bodies.invI(index1(joint))
-        masses(m + 2) = bodies.invMass(index2(joint)); masses(m + 3) = bodies.invI(index2(joint))
-      else if !nodeFolded(node) then
-        val b = nodeRef(node)
-        masses(m) = 1 / bodies.invMass(b)
-        masses(m + 1) = 1 / bodies.invI(b)
-      node += 1
+    var slot = 0
+    while slot < liveCount do
+      val m = 4 * slot
+      val ref = plan(Plan.Stride * slot + Plan.Ref)
+      if plan(Plan.Stride * slot + Plan.Size) < 3 then
+        masses(m) = bodies.invMass(index1(ref)); masses(m + 1) = bodies.invI(index1(ref))
+        masses(m + 2) = bodies.invMass(index2(ref)); masses(m + 3) = bodies.invI(index2(ref))
+      else
+        masses(m) = 1 / bodies.invMass(ref)
+        masses(m + 1) = 1 / bodies.invI(ref)
+      slot += 1
 
   private def mark(index: Int): Unit = if index >= 0 && index < bodyMark.length then bodyMark(index) = markStamp
 
@@ -538,14 +578,13 @@ private[sims] final class JointTrees:
           val until = liveStart(tree + 1)
           // The joints' rows at the current positions first (a loop of its own: fused into
           // `setUp` it measured 8% slower on a chain).
-          var n = from
-          while n < until do
-            val node = live(n)
-            if nodeIsJoint(node) then
-              val joint = nodeRef(node)
-              rows.target(jacobians, 12 * joint, positionError, 2 * joint)
-              direct(joint).rowsAt(context, rows)
-            n += 1
+          var slot = from
+          while slot < until do
+            val o = Plan.Stride * slot
+            if plan(o + Plan.Size) < 3 then
+              rows.target(jacobians, 12 * slot, positionError, 2 * slot)
+              direct(plan(o + Plan.Ref)).rowsAt(context, rows)
+            slot += 1
           // A tree the warm start left alone starts the substep's solve pass from 0.
           val fresh = useBias && !treeTouched(tree)
           setUp(context, state, useBias, fresh, from, until)
@@ -553,8 +592,8 @@ private[sims] final class JointTrees:
           substitute(state, fresh, from, until)
         tree += 1
 
-  /** For the nodes `live(from until until)`, each node's block of H and right side: a body's
-    * mass matrix and 0; a joint's -G (its compliance, in the solve pass) less its folded bodies'
+  /** For the slots `from until until`, each one's block of H and right side: a body's mass
+    * matrix and 0; a joint's -G (its compliance, in the solve pass) less its folded bodies'
     * J M^-1 J^T, and -(Cdot + bias + G lambdaAcc); the block between a joint and the joint above
     * it (see `fold`).
     */
@@ -570,34 +609,35 @@ private[sims] final class JointTrees:
     // stays within about 1 / Compliance times what its own bodies alone would give.
     val compliance = if useBias then JointTrees.Compliance else 0.0
     val inverseH = context.inverseH
-    var n = from
-    while n < until do
-      val node = live(n)
-      val o = 6 * node
-      val v = 3 * node
-      if nodeIsJoint(node) then
-        val joint = nodeRef(node)
-        val j1 = 12 * joint
+    val plan = this.plan; val masses = this.masses; val d = this.d; val z = this.z
+    var slot = from
+    while slot < until do
+      val p = Plan.Stride * slot
+      val o = 6 * slot
+      val v = 3 * slot
+      val size = plan(p + Plan.Size)
+      if size < 3 then
+        val j1 = 12 * slot
         val j2 = j1 + 6
-        val s1 = index1(joint) * SoftBodies.Stride
-        val s2 = index2(joint) * SoftBodies.Stride
-        val m1 = masses(4 * node); val i1 = masses(4 * node + 1)
-        val m2 = masses(4 * node + 2); val i2 = masses(4 * node + 3)
+        val s1 = plan(p + Plan.State1)
+        val s2 = plan(p + Plan.State2)
+        val m1 = masses(4 * slot); val i1 = masses(4 * slot + 1)
+        val m2 = masses(4 * slot + 2); val i2 = masses(4 * slot + 3)
         // Each body's share of K that D takes: the compliance's, and all of a folded body's.
-        val folds = nodeFolds(node)
+        val folds = plan(p + Plan.Folds)
         val share1 = if (folds & 1) != 0 then 1 + compliance else compliance
         val share2 = if (folds & 2) != 0 then 1 + compliance else compliance
-        val accumulated = impulses(joint)
+        val accumulated = impulses(slot)
         val acc0 = if fresh then 0.0 else accumulated(0)
         val cdot0 = rowVelocity(j1, state, s1) + rowVelocity(j2, state, s2)
-        val bias0 = if useBias then positionError(2 * joint) * inverseH else 0.0
+        val bias0 = if useBias then positionError(2 * slot) * inverseH else 0.0
         val a00 = coupling(j1, j1, m1, i1); val b00 = coupling(j2, j2, m2, i2)
         val g00 = compliance * (a00 + b00)
         d(o) = -(share1 * a00 + share2 * b00)
-        if nodeSize(node) == 1 then z(v) = -(cdot0 + bias0 + g00 * acc0)
+        if size == 1 then z(v) = -(cdot0 + bias0 + g00 * acc0)
         else
           val cdot1 = rowVelocity(j1 + 3, state, s1) + rowVelocity(j2 + 3, state, s2)
-          val bias1 = if useBias then positionError(2 * joint + 1) * inverseH else 0.0
+          val bias1 = if useBias then positionError(2 * slot + 1) * inverseH else 0.0
           val a01 = coupling(j1, j1 + 3, m1, i1); val b01 = coupling(j2, j2 + 3, m2, i2)
           val a11 = coupling(j1 + 3, j1 + 3, m1, i1); val b11 = coupling(j2 + 3, j2 + 3, m2, i2)
           val g01 = compliance * (a01 + b01)
@@ -606,39 +646,40 @@ private[sims] final class JointTrees:
           d(o + 1) = -(share1 * a01 + share2 * b01); d(o + 3) = -(share1 * a11 + share2 * b11)
           z(v) = -(cdot0 + bias0 + g00 * acc0 + g01 * acc1)
           z(v + 1) = -(cdot1 + bias1 + g01 * acc0 + g11 * acc1)
-        val above = nodeAbove(node)
-        if above >= 0 && nodeIsJoint(above) then
+        val over = plan(p + Plan.Over)
+        if over >= 0 then
           // The folded body between them is one of this joint's two.
-          if nodeJacobian(node) == j1 then setLink(node, above, m1, i1) else setLink(node, above, m2, i2)
+          val below = plan(p + Plan.Block)
+          val above = plan(p + Plan.Above)
+          if below == j1 then setLink(slot, size, below, over, above, m1, i1)
+          else setLink(slot, size, below, over, above, m2, i2)
       else
-        val mass = masses(4 * node)
+        val mass = masses(4 * slot)
         d(o) = mass; d(o + 1) = 0; d(o + 2) = 0
         d(o + 3) = mass; d(o + 4) = 0
-        d(o + 5) = masses(4 * node + 1)
+        d(o + 5) = masses(4 * slot + 1)
         z(v) = 0; z(v + 1) = 0; z(v + 2) = 0
-      n += 1
+      slot += 1
 
-  /** The block B between joint node `node` and the joint node `above` it, through the folded
-    * body between them (inverse mass m, inverse moment i): -J M^-1 J_above^T, B(r, q) at
-    * 4 node + 2 r + q (0 where either joint has one row).
+  /** The block B between joint `slot` (of `size` rows, its rows for the folded body at `below`)
+    * and the joint `above` it (its rows for that body at `over`), through the folded body
+    * (inverse mass m, inverse moment i): -J M^-1 J_above^T, B(r, q) at 4 slot + 2 r + q (0 where
+    * either joint has one row).
     */
-  private inline def setLink(node: Int, above: Int, m: Double, i: Double): Unit =
-    val body = nodeParent(node)
-    val below = nodeJacobian(node) // this joint's rows for the body
-    val over = nodeJacobian(body) // the joint above's rows for it
-    val two = nodeSize(above) == 2
-    val l = 4 * node
+  private inline def setLink(slot: Int, size: Int, below: Int, over: Int, above: Int, m: Double, i: Double): Unit =
+    val two = plan(Plan.Stride * above + Plan.Size) == 2
+    val l = 4 * slot
     link(l) = -coupling(below, over, m, i)
     link(l + 1) = if two then -coupling(below, over + 3, m, i) else 0.0
-    if nodeSize(node) == 2 then
+    if size == 2 then
       link(l + 2) = -coupling(below + 3, over, m, i)
       link(l + 3) = if two then -coupling(below + 3, over + 3, m, i) else 0.0
     else
       link(l + 2) = 0.0
       link(l + 3) = 0.0
 
-  /** The nodes `live(from until until)`, leaves first: each node's D is final once its children
-    * are eliminated; it is inverted and eliminated into the node above it:
+  /** The slots `from until until`, leaves first: each one's D is final once its children are
+    * eliminated; it is inverted and eliminated into the slot above it:
     * D_p -= H_pc D_c^-1 H_cp and z_p -= H_pc D_c^-1 z_c, where H_pc is J^T (3 x k) for a joint
     * below a body, J (k x 3) for a body below a joint, and B^T for a joint below a joint (see
     * `fold`). Kept for the substitution: w_c = D_c^-1 z_c, and the factor D_c^-1 J or D_c^-1 B
@@ -649,14 +690,17 @@ private[sims] final class JointTrees:
     * which a joint to the ground only lacks as its tree's root.
     */
   private def eliminate(from: Int, until: Int): Unit =
-    var n = until - 1
-    while n >= from do
-      val node = live(n)
-      val o = 6 * node
-      val v = 3 * node
-      if nodeIsJoint(node) then
+    val plan = this.plan; val d = this.d; val z = this.z; val w = this.w
+    var slot = until - 1
+    while slot >= from do
+      val p = Plan.Stride * slot
+      val o = 6 * slot
+      val v = 3 * slot
+      val size = plan(p + Plan.Size)
+      val above = plan(p + Plan.Above)
+      if size < 3 then
         // D^-1, symmetric: i00, i01, i11 (i00 alone for one row); a singular block gives 0.
-        val two = nodeSize(node) == 2
+        val two = size == 2
         var i00, i01, i11 = 0.0
         if two then
           val a = d(o); val b = d(o + 1); val c = d(o + 3)
@@ -668,10 +712,10 @@ private[sims] final class JointTrees:
         val y0 = i00 * z0 + i01 * z1
         val y1 = i01 * z0 + i11 * z1
         w(v) = y0; w(v + 1) = y1
-        val above = nodeAbove(node)
         if above >= 0 then
-          if nodeIsJoint(above) then eliminateIntoJoint(node, above, i00, i01, i11, y0, y1)
-          else eliminateIntoBody(node, above, i00, i01, i11, y0, y1)
+          val aboveSize = plan(Plan.Stride * above + Plan.Size)
+          if aboveSize < 3 then eliminateIntoJoint(slot, size, above, aboveSize, i00, i01, i11, y0, y1)
+          else eliminateIntoBody(slot, size, plan(p + Plan.Block), above, i00, i01, i11, y0, y1)
       else
         // The symmetric 3 x 3 inverse by cofactors (a singular block gives 0).
         val a = d(o); val b = d(o + 1); val c = d(o + 2); val e = d(o + 3); val f = d(o + 4); val i = d(o + 5)
@@ -684,74 +728,73 @@ private[sims] final class JointTrees:
         w(v) = i00 * z0 + i01 * z1 + i02 * z2
         w(v + 1) = i01 * z0 + i11 * z1 + i12 * z2
         w(v + 2) = i02 * z0 + i12 * z1 + i22 * z2
-        val parent = nodeParent(node)
-        if parent >= 0 then
-          val p = 6 * parent
-          val pv = 3 * parent
+        if above >= 0 then
+          val q = 6 * above
+          val qv = 3 * above
           // F = J D^-1 (k x 3); D_p -= F J^T, z_p -= F z
-          val jo = nodeJacobian(node)
+          val jo = plan(p + Plan.Block)
           val a0 = jacobians(jo); val a1 = jacobians(jo + 1); val a2 = jacobians(jo + 2)
           val f0 = a0 * i00 + a1 * i01 + a2 * i02
           val f1 = a0 * i01 + a1 * i11 + a2 * i12
           val f2 = a0 * i02 + a1 * i12 + a2 * i22
           factor(o) = f0; factor(o + 1) = f1; factor(o + 2) = f2
-          d(p) -= f0 * a0 + f1 * a1 + f2 * a2
-          z(pv) -= f0 * z0 + f1 * z1 + f2 * z2
-          if nodeSize(parent) == 2 then
+          d(q) -= f0 * a0 + f1 * a1 + f2 * a2
+          z(qv) -= f0 * z0 + f1 * z1 + f2 * z2
+          if plan(Plan.Stride * above + Plan.Size) == 2 then
             val b0 = jacobians(jo + 3); val b1 = jacobians(jo + 4); val b2 = jacobians(jo + 5)
             val h0 = b0 * i00 + b1 * i01 + b2 * i02
             val h1 = b0 * i01 + b1 * i11 + b2 * i12
             val h2 = b0 * i02 + b1 * i12 + b2 * i22
             factor(o + 3) = h0; factor(o + 4) = h1; factor(o + 5) = h2
-            d(p + 1) -= f0 * b0 + f1 * b1 + f2 * b2
-            d(p + 3) -= h0 * b0 + h1 * b1 + h2 * b2
-            z(pv + 1) -= h0 * z0 + h1 * z1 + h2 * z2
-      n -= 1
+            d(q + 1) -= f0 * b0 + f1 * b1 + f2 * b2
+            d(q + 3) -= h0 * b0 + h1 * b1 + h2 * b2
+            z(qv + 1) -= h0 * z0 + h1 * z1 + h2 * z2
+      slot -= 1
 
-  /** Joint node `node` (D^-1 = (i00, i01; i01, i11), y = D^-1 z) into the joint node `above`,
-    * through the block B (see `setLink`): G = D^-1 B kept, D_above -= B^T G, z_above -= B^T y.
-    * (Where either has one row, B's other entries are 0: so are G's and the updates'.)
+  /** Joint `slot` of `size` rows (D^-1 = (i00, i01; i01, i11), y = D^-1 z) into the joint `above`
+    * of `aboveSize` rows, through the block B (see `setLink`): G = D^-1 B kept, D_above -= B^T G,
+    * z_above -= B^T y. (Where either has one row, B's other entries are 0: so are G's and the
+    * updates'.)
     */
-  private inline def eliminateIntoJoint(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
-      y1: Double): Unit =
-    val l = 4 * node
-    val o = 6 * node
-    val p = 6 * above
-    val pv = 3 * above
+  private inline def eliminateIntoJoint(slot: Int, size: Int, above: Int, aboveSize: Int, i00: Double, i01: Double,
+      i11: Double, y0: Double, y1: Double): Unit =
+    val l = 4 * slot
+    val o = 6 * slot
+    val q = 6 * above
+    val qv = 3 * above
     val b00 = link(l)
-    if nodeSize(node) == 1 && nodeSize(above) == 1 then
+    if size == 1 && aboveSize == 1 then
       // A chain of one-row joints (distance joints): scalars.
       val g00 = i00 * b00
       factor(o) = g00
-      d(p) -= b00 * g00
-      z(pv) -= b00 * y0
+      d(q) -= b00 * g00
+      z(qv) -= b00 * y0
     else
       val b01 = link(l + 1); val b10 = link(l + 2); val b11 = link(l + 3)
       val g00 = i00 * b00 + i01 * b10; val g01 = i00 * b01 + i01 * b11
       val g10 = i01 * b00 + i11 * b10; val g11 = i01 * b01 + i11 * b11
       factor(o) = g00; factor(o + 1) = g01; factor(o + 2) = g10; factor(o + 3) = g11
-      d(p) -= b00 * g00 + b10 * g10
-      d(p + 1) -= b00 * g01 + b10 * g11
-      d(p + 3) -= b01 * g01 + b11 * g11
-      z(pv) -= b00 * y0 + b10 * y1
-      z(pv + 1) -= b01 * y0 + b11 * y1
+      d(q) -= b00 * g00 + b10 * g10
+      d(q + 1) -= b00 * g01 + b10 * g11
+      d(q + 3) -= b01 * g01 + b11 * g11
+      z(qv) -= b00 * y0 + b10 * y1
+      z(qv + 1) -= b01 * y0 + b11 * y1
 
-  /** Joint node `node` (D^-1 = (i00, i01; i01, i11), y = D^-1 z) into the body node `above`: G =
-    * D^-1 J kept, D_above -= J^T G, z_above -= J^T y.
+  /** Joint `slot` of `size` rows (D^-1 = (i00, i01; i01, i11), y = D^-1 z, its rows for the body
+    * at `jo`) into the body `above`: G = D^-1 J kept, D_above -= J^T G, z_above -= J^T y.
     */
-  private inline def eliminateIntoBody(node: Int, above: Int, i00: Double, i01: Double, i11: Double, y0: Double,
-      y1: Double): Unit =
-    val o = 6 * node
-    val p = 6 * above
-    val pv = 3 * above
-    val jo = nodeJacobian(node)
+  private inline def eliminateIntoBody(slot: Int, size: Int, jo: Int, above: Int, i00: Double, i01: Double,
+      i11: Double, y0: Double, y1: Double): Unit =
+    val o = 6 * slot
+    val q = 6 * above
+    val qv = 3 * above
     val a0 = jacobians(jo); val a1 = jacobians(jo + 1); val a2 = jacobians(jo + 2)
-    if nodeSize(node) == 1 then
+    if size == 1 then
       val g0 = i00 * a0; val g1 = i00 * a1; val g2 = i00 * a2
       factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
-      d(p) -= a0 * g0; d(p + 1) -= a0 * g1; d(p + 2) -= a0 * g2
-      d(p + 3) -= a1 * g1; d(p + 4) -= a1 * g2; d(p + 5) -= a2 * g2
-      z(pv) -= a0 * y0; z(pv + 1) -= a1 * y0; z(pv + 2) -= a2 * y0
+      d(q) -= a0 * g0; d(q + 1) -= a0 * g1; d(q + 2) -= a0 * g2
+      d(q + 3) -= a1 * g1; d(q + 4) -= a1 * g2; d(q + 5) -= a2 * g2
+      z(qv) -= a0 * y0; z(qv + 1) -= a1 * y0; z(qv + 2) -= a2 * y0
     else
       val b0 = jacobians(jo + 3); val b1 = jacobians(jo + 4); val b2 = jacobians(jo + 5)
       // G = D^-1 J, rows g and h
@@ -759,42 +802,44 @@ private[sims] final class JointTrees:
       val h0 = i01 * a0 + i11 * b0; val h1 = i01 * a1 + i11 * b1; val h2 = i01 * a2 + i11 * b2
       factor(o) = g0; factor(o + 1) = g1; factor(o + 2) = g2
       factor(o + 3) = h0; factor(o + 4) = h1; factor(o + 5) = h2
-      d(p) -= a0 * g0 + b0 * h0; d(p + 1) -= a0 * g1 + b0 * h1; d(p + 2) -= a0 * g2 + b0 * h2
-      d(p + 3) -= a1 * g1 + b1 * h1; d(p + 4) -= a1 * g2 + b1 * h2; d(p + 5) -= a2 * g2 + b2 * h2
-      z(pv) -= a0 * y0 + b0 * y1; z(pv + 1) -= a1 * y0 + b1 * y1; z(pv + 2) -= a2 * y0 + b2 * y1
+      d(q) -= a0 * g0 + b0 * h0; d(q + 1) -= a0 * g1 + b0 * h1; d(q + 2) -= a0 * g2 + b0 * h2
+      d(q + 3) -= a1 * g1 + b1 * h1; d(q + 4) -= a1 * g2 + b1 * h2; d(q + 5) -= a2 * g2 + b2 * h2
+      z(qv) -= a0 * y0 + b0 * y1; z(qv + 1) -= a1 * y0 + b1 * y1; z(qv + 2) -= a2 * y0 + b2 * y1
 
-  /** The nodes `live(from until until)`, roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the
+  /** The slots `from until until`, roots first: x_c = D_c^-1 (z_c - H_cp x_p) = w_c - (the
     * factor) x_p; then the velocities change by their bodies' x (a folded body's by -M^-1 J^T x
     * of its joints), each joint's accumulated impulse by -x.
     */
   private def substitute(state: Array[Double], fresh: Boolean, from: Int, until: Int): Unit =
-    var n = from
-    while n < until do
-      val node = live(n)
-      val o = 6 * node
-      val v = 3 * node
-      if nodeIsJoint(node) then
-        val two = nodeSize(node) == 2
-        val above = nodeAbove(node)
+    val plan = this.plan; val factor = this.factor; val w = this.w; val x = this.x
+    var slot = from
+    while slot < until do
+      val p = Plan.Stride * slot
+      val o = 6 * slot
+      val v = 3 * slot
+      val size = plan(p + Plan.Size)
+      val above = plan(p + Plan.Above)
+      if size < 3 then
+        val two = size == 2
         if above < 0 then
           x(v) = w(v)
           if two then x(v + 1) = w(v + 1)
         else
-          val pv = 3 * above
-          if nodeIsJoint(above) then
+          val qv = 3 * above
+          val aboveSize = plan(Plan.Stride * above + Plan.Size)
+          if aboveSize < 3 then
             // x = w - G x_above
-            if !two && nodeSize(above) == 1 then x(v) = w(v) - factor(o) * x(pv)
+            if !two && aboveSize == 1 then x(v) = w(v) - factor(o) * x(qv)
             else
-              val p0 = x(pv); val p1 = if nodeSize(above) == 2 then x(pv + 1) else 0.0
+              val p0 = x(qv); val p1 = if aboveSize == 2 then x(qv + 1) else 0.0
               x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1)
               if two then x(v + 1) = w(v + 1) - (factor(o + 2) * p0 + factor(o + 3) * p1)
           else
             // x = w - G x_above
-            val p0 = x(pv); val p1 = x(pv + 1); val p2 = x(pv + 2)
+            val p0 = x(qv); val p1 = x(qv + 1); val p2 = x(qv + 2)
             x(v) = w(v) - (factor(o) * p0 + factor(o + 1) * p1 + factor(o + 2) * p2)
             if two then x(v + 1) = w(v + 1) - (factor(o + 3) * p0 + factor(o + 4) * p1 + factor(o + 5) * p2)
-        val joint = nodeRef(node)
-        val accumulated = impulses(joint)
+        val accumulated = impulses(slot)
         val x0 = x(v); val x1 = if two then x(v + 1) else 0.0
         if fresh then
           accumulated(0) = -x0
@@ -802,40 +847,40 @@ private[sims] final class JointTrees:
         else
           accumulated(0) -= x0
           if two then accumulated(1) -= x1
-        val folds = nodeFolds(node)
-        val m = 4 * node
-        if (folds & 1) != 0 then push(state, index1(joint), masses(m), masses(m + 1), 12 * joint, two, x0, x1)
-        if (folds & 2) != 0 then push(state, index2(joint), masses(m + 2), masses(m + 3), 12 * joint + 6, two, x0, x1)
+        val folds = plan(p + Plan.Folds)
+        val m = 4 * slot
+        val j1 = 12 * slot
+        if (folds & 1) != 0 then push(state, plan(p + Plan.State1), masses(m), masses(m + 1), j1, two, x0, x1)
+        if (folds & 2) != 0 then push(state, plan(p + Plan.State2), masses(m + 2), masses(m + 3), j1 + 6, two, x0, x1)
       else
-        val parent = nodeParent(node)
-        if parent < 0 then
+        if above < 0 then
           x(v) = w(v); x(v + 1) = w(v + 1); x(v + 2) = w(v + 2)
         else
           // x = w - F^T x_p
-          val pv = 3 * parent
-          val q0 = x(pv)
-          if nodeSize(parent) == 1 then
+          val qv = 3 * above
+          val q0 = x(qv)
+          if plan(Plan.Stride * above + Plan.Size) == 1 then
             x(v) = w(v) - factor(o) * q0
             x(v + 1) = w(v + 1) - factor(o + 1) * q0
             x(v + 2) = w(v + 2) - factor(o + 2) * q0
           else
-            val q1 = x(pv + 1)
+            val q1 = x(qv + 1)
             x(v) = w(v) - factor(o) * q0 - factor(o + 3) * q1
             x(v + 1) = w(v + 1) - factor(o + 1) * q0 - factor(o + 4) * q1
             x(v + 2) = w(v + 2) - factor(o + 2) * q0 - factor(o + 5) * q1
-        val k = nodeRef(node) * SoftBodies.Stride
+        val k = plan(p + Plan.State1)
         state(k + VelocityX) += x(v); state(k + VelocityY) += x(v + 1); state(k + AngularVelocity) += x(v + 2)
-      n += 1
+      slot += 1
 
   /** A folded body's share of its joint's solution: dv = -M^-1 J^T x, M^-1 its inverse mass m
-    * and moment i, J the joint's rows for the body at `rows` (the second row only when `two`).
+    * and moment i, its state at `k`, J the joint's rows for the body at `rows` (the second row
+    * only when `two`).
     */
-  private def push(state: Array[Double], body: Int, m: Double, i: Double, rows: Int, two: Boolean, x0: Double,
+  private def push(state: Array[Double], k: Int, m: Double, i: Double, rows: Int, two: Boolean, x0: Double,
       x1: Double): Unit =
     var fx = jacobians(rows) * x0; var fy = jacobians(rows + 1) * x0; var torque = jacobians(rows + 2) * x0
     if two then
       fx += jacobians(rows + 3) * x1; fy += jacobians(rows + 4) * x1; torque += jacobians(rows + 5) * x1
-    val k = body * SoftBodies.Stride
     state(k + VelocityX) -= m * fx; state(k + VelocityY) -= m * fy; state(k + AngularVelocity) -= i * torque
 
   /** Rows at r and q of a joint's Jacobian for one body through that body's inverse mass: its
@@ -850,6 +895,17 @@ private[sims] final class JointTrees:
       jacobians(row + 2) * state(s + AngularVelocity)
 
 private[sims] object JointTrees:
+  /** The offsets of a slot's plan (see `plan`): Stride entries a slot. */
+  private object Plan:
+    final val Ref = 0
+    final val Size = 1
+    final val Above = 2
+    final val Block = 3
+    final val Over = 4
+    final val Folds = 5
+    final val State1 = 6
+    final val State2 = 7
+    final val Stride = 8
   /** The trees' compliance in the solve pass, relative to each joint's own effective mass: it
     * stretches a joint under load by about Compliance g h^2 per unit of the load it carries
     * (0.0002 mm at 4 substeps of 1/60 s), and bounds how far a near-singular tree amplifies an
