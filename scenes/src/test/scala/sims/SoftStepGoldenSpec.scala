@@ -39,5 +39,5 @@ class SoftStepGoldenSpec extends AnyFunSuite with Matchers:
   }
 
   test("golden-mixed under SoftStep after 240 steps") {
-    soft("golden-mixed", 240) shouldBe "add0e8f8bca0451d"
+    soft("golden-mixed", 240) shouldBe "2575cafcd8d81fc1"
   }

@@ -72,7 +72,7 @@ object SceneHashesSpec:
     "Platformer" -> ("0e01a784731f675e", "b6a684c9c0c625bf"),
     "LimitedRagdoll" -> ("fce65789c5e27c8f", "7e803b7dcac2a7a0"),
     "Car" -> (SoftOnly, "cbaa73525e95ad21"),
-    "Bridge" -> (SoftOnly, "04c45429b8697b6f"),
+    "Bridge" -> (SoftOnly, "14db9d723aac8d78"),
     "Windmill" -> (SoftOnly, "7e7a53a8e0c52a81")
   )
 

@@ -377,14 +377,13 @@ private[sims] final class JointTrees:
           plan(o + Plan.State2) = 0
       node += 1
 
-  /** The root of the tree holding `element` (a body b < n or a joint n + t): its joint to the
-    * ground if it has one, else its centre, the middle of a longest path, found by two sweeps
-    * (the farthest element from any is an end of a longest path; the farthest from that end is
-    * the other). Eliminated from the leaves towards its centre, a tree's branches are
-    * independent chains of arithmetic of about half the tree's depth, which the processor
-    * overlaps. A joint to the ground must be the root: below its body it would be a pivot of its
-    * own with no body below it (0 in the relax pass), and the bodies it holds would give the
-    * joints above them singular pivots (a straight chain eliminated from its fixed end).
+  /** The root of the tree holding `element` (a body b < n or a joint n + t): its centre, the
+    * middle of a longest path, found by two sweeps (the farthest element from any is an end of a
+    * longest path; the farthest from that end is the other). Eliminated from the leaves towards
+    * its centre, a tree's branches are independent chains of arithmetic of about half the tree's
+    * depth, which the processor overlaps: a chain hung from one end is solved as two half chains
+    * at once. A joint to the ground is the root unless that centre is a joint on the plain chain
+    * that starts at it (see `onChain`).
     */
   private def rootOf(element: Int, n: Int): Int =
     val end = sweep(element, n)
@@ -394,15 +393,32 @@ private[sims] final class JointTrees:
       val e = queue(k)
       if e >= n && (body1(e - n) < 0 || body2(e - n) < 0) then ground = e
       k += 1
-    if ground >= 0 then ground
+    var middle = sweep(end, n)
+    var length = 0
+    var e = middle
+    while e != end do { e = previous(e); length += 1 }
+    k = 0
+    while k < length / 2 do { middle = previous(middle); k += 1 }
+    if ground < 0 then middle
     else
-      var middle = sweep(end, n)
-      var length = 0
-      var e = middle
-      while e != end do { e = previous(e); length += 1 }
-      k = 0
-      while k < length / 2 do { middle = previous(middle); k += 1 }
-      middle
+      if middle < n then middle = previous(middle) // a joint: its body would not be folded
+      if onChain(middle - n, ground - n) then middle else ground
+
+  /** Whether `joint` lies on the plain chain that starts at joint `ground` (to the ground):
+    * ground, its body, the body's other joint, and on while each body holds two joints. Every
+    * body there is folded into its two joints (see `fold`) when `joint` is the root, so each of
+    * those joints, eliminated from the ground up, has the whole mass of the body above it for its
+    * pivot. Below a body that is not folded (where the tree branches), a joint would have only
+    * what the joints below left of its lower body: for a revolute joint, the one turn a revolute
+    * joint to the ground leaves, or nothing at all in a straight chain, a singular pivot.
+    */
+  private def onChain(joint: Int, ground: Int): Boolean =
+    var t = ground
+    var body = math.max(body1(ground), body2(ground))
+    while t != joint && body >= 0 && start(body + 1) - start(body) == 2 do
+      t = if incident(start(body)) == t then incident(start(body) + 1) else incident(start(body))
+      body = if body1(t) == body then body2(t) else body1(t)
+    t == joint
 
   /** Visits the tree of `from` breadth first (bodies b < n, joints n + t), leaving each
     * element's predecessor in `previous` and the elements visited in `queue(0 until
