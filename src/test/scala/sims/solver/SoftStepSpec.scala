@@ -315,6 +315,31 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
       }
   }
 
+  test("a spinning ball's contact point stays under its centre, however far it turned in the step") {
+    val world = World()
+    world.solver = SoftStep(workers = 1)
+    val ball = Circle(0.1, 1)
+    ball.pos = Vector2D(0, 0.1)
+    ball.friction = 0 // spins in place
+    val body = ball.asBody
+    world += body
+    val ground = Rectangle(5, 0.5, 1)
+    ground.pos = Vector2D(0, -0.5)
+    ground.friction = 0
+    val fixed = ground.asBody; fixed.fixed = true
+    world += fixed
+    for _ <- 1 to 30 do world.step()
+    body.angularVelocity = 20 // a third of a turn a step
+    for _ <- 1 to 10 do
+      world.step()
+      val contact = world.contacts.find(c => (c.shape1 eq ball) || (c.shape2 eq ball)).get
+      // The points are on shape A's body: on the ball here, whose outline does not move as it turns.
+      contact.shape1 shouldBe ball
+      for point <- contact.points do
+        (point.x - body.pos.x).abs should be < 1e-9
+        (point.y - (body.pos.y - 0.1)).abs should be < 1e-3
+  }
+
   test("the direct solver makes every joint of a chain exact: after a relax pass no link moves apart") {
     val world = World()
     world.gravity = Vector2D.Null

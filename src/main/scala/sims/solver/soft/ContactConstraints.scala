@@ -367,6 +367,22 @@ private[sims] object ContactConstraints:
         if turnsA then state(sA + TurnSin) else 0.0, if turnsB then state(sB + TurnCos) else 1.0,
         if turnsB then state(sB + TurnSin) else 0.0)
 
+  /** Where contact c's point at q is now, on body A: its arm from A's centre, turned with A
+    * unless that side is turnless (a circle's point stays on the line from its centre along the
+    * normal, however the circle turns).
+    */
+  def pointNow(contacts: Contacts, c: Int, q: Int, bodies: SoftBodies): sims.geometry.Vector2D =
+    val hot = contacts.hot
+    val state = bodies.state
+    val a = contacts.bodyA(c)
+    val sA = a * SoftBodies.Stride
+    val turns = (contacts.turnless(c) & TurnlessA) == 0
+    val cos = if turns then state(sA + TurnCos) else 1.0
+    val sin = if turns then state(sA + TurnSin) else 0.0
+    val rx = hot(q + AnchorAX); val ry = hot(q + AnchorAY)
+    sims.geometry.Vector2D(bodies.startX(a) + state(sA + ShiftX) + (cos * rx - sin * ry),
+      bodies.startY(a) + state(sA + ShiftY) + (sin * rx + cos * ry))
+
   /** The change of the normal velocity of contact c's point at q over a substep h by gravity
     * and the forces alone.
     */

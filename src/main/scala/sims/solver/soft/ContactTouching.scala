@@ -2,7 +2,6 @@ package sims.solver.soft
 
 import sims.collision.PairTracker
 import sims.solver.soft.ContactTable.*
-import sims.solver.soft.SoftBodies.*
 
 /** Which of the soft step's contacts touch, for the world's contact events, after the substeps
   * and restitution: a contact touches when one of its points is at or below zero separation at
@@ -56,8 +55,6 @@ private[sims] object ContactTouching:
   private def describe(contacts: Contacts, bodies: SoftBodies, tracker: PairTracker, c: Int): Unit =
     val hot = contacts.hot
     val state = bodies.state
-    val a = contacts.bodyA(c)
-    val sA = a * SoftBodies.Stride
     val k = contacts.offset(c)
     val nx = hot(k + NormalX); val ny = hot(k + NormalY)
     var touching = 0
@@ -70,9 +67,9 @@ private[sims] object ContactTouching:
       val pushed = hot(q + TotalNormalImpulse)
       if ContactConstraints.separationNow(contacts, c, q, state) <= 0 || pushed > 0 then
         touching += 1
-        val rAx = hot(q + AnchorAX); val rAy = hot(q + AnchorAY)
-        sumX += bodies.startX(a) + state(sA + ShiftX) + (state(sA + TurnCos) * rAx - state(sA + TurnSin) * rAy)
-        sumY += bodies.startY(a) + state(sA + ShiftY) + (state(sA + TurnSin) * rAx + state(sA + TurnCos) * rAy)
+        val point = ContactConstraints.pointNow(contacts, c, q, bodies)
+        sumX += point.x
+        sumY += point.y
         fastest = math.max(fastest, -contacts.records(contacts.recordPoint(c, p) + RelativeVelocity))
       impulse += pushed
       p += 1

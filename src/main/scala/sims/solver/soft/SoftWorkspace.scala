@@ -1,7 +1,6 @@
 package sims.solver.soft
 
 import sims.solver.soft.joints.SoftJoints
-import sims.solver.soft.SoftBodies.*
 
 /** What the soft step keeps for one world: the bodies' arrays, the contact table and the joints'
   * constraints with their impulses (both carried from step to step), the collision stage and the
@@ -40,18 +39,11 @@ private[sims] final class SoftWorkspace extends sims.dynamics.CarriedState:
     val hot = contacts.hot
     val state = bodies.state
     IndexedSeq.tabulate(contacts.count) { c =>
-      val a = contacts.bodyA(c)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX)
       val ny = hot(k + NormalY)
-      val sA = a * SoftBodies.Stride
       val count = contacts.pointCount(c)
-      val points = IndexedSeq.tabulate(count) { p =>
-        val q = contacts.hotPoint(c, p)
-        val rx = hot(q + AnchorAX); val ry = hot(q + AnchorAY)
-        sims.geometry.Vector2D(bodies.startX(a) + state(sA + ShiftX) + state(sA + TurnCos) * rx - state(sA + TurnSin) * ry,
-          bodies.startY(a) + state(sA + ShiftY) + state(sA + TurnSin) * rx + state(sA + TurnCos) * ry)
-      }
+      val points = IndexedSeq.tabulate(count)(p => ContactConstraints.pointNow(contacts, c, contacts.hotPoint(c, p), bodies))
       val separations =
         IndexedSeq.tabulate(count)(p => ContactConstraints.separationNow(contacts, c, contacts.hotPoint(c, p), state))
       def column(offset: Int) = IndexedSeq.tabulate(count)(p => hot(contacts.hotPoint(c, p) + offset))
