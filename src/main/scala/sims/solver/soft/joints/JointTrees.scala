@@ -329,11 +329,10 @@ private[sims] final class JointTrees:
   private def folded(body: Int): Boolean = body >= 0 && nodeFolded(bodyNode(body))
 
   /** Numbers each tree's nodes that are not folded as slots, in node order, and writes their
-    * plan (see `plan`), with each joint's accumulated impulses.
+    * plan (see `plan`) and each joint's array of accumulated impulses.
     */
   private def planSlots(): Unit =
     if liveStart.length < treeCount + 1 then liveStart = new Array[Int](2 * (treeCount + 1))
-    val slotOf = nodeSlot
     var count = 0
     var tree = 0
     while tree < treeCount do
@@ -341,9 +340,9 @@ private[sims] final class JointTrees:
       var node = treeStart(tree)
       while node < treeStart(tree + 1) do
         if !nodeFolded(node) then
-          slotOf(node) = count
+          nodeSlot(node) = count
           count += 1
-        else slotOf(node) = -1
+        else nodeSlot(node) = -1
         node += 1
       tree += 1
     liveStart(treeCount) = count
@@ -351,7 +350,7 @@ private[sims] final class JointTrees:
     java.util.Arrays.fill(impulses.asInstanceOf[Array[AnyRef]], 0, impulses.length, null) // no joint that left
     var node = 0
     while node < nodeCount do
-      val slot = slotOf(node)
+      val slot = nodeSlot(node)
       if slot >= 0 then
         val o = Plan.Stride * slot
         val ref = nodeRef(node)
@@ -360,18 +359,18 @@ private[sims] final class JointTrees:
         plan(o + Plan.Over) = -1
         if nodeIsJoint(node) then
           val above = nodeAbove(node)
-          plan(o + Plan.Above) = if above >= 0 then slotOf(above) else -1
+          plan(o + Plan.Above) = if above >= 0 then nodeSlot(above) else -1
           plan(o + Plan.Block) = if nodeParent(node) >= 0 then 12 * slot + nodeSide(node) else -1
           if above >= 0 && nodeIsJoint(above) then
-            plan(o + Plan.Over) = 12 * slotOf(above) + nodeSide(nodeParent(node))
+            plan(o + Plan.Over) = 12 * nodeSlot(above) + nodeSide(nodeParent(node))
           plan(o + Plan.Folds) = nodeFolds(node)
           plan(o + Plan.State1) = index1(ref) * SoftBodies.Stride
           plan(o + Plan.State2) = index2(ref) * SoftBodies.Stride
           impulses(slot) = direct(ref).impulse
         else
           val parent = nodeParent(node)
-          plan(o + Plan.Above) = if parent >= 0 then slotOf(parent) else -1
-          plan(o + Plan.Block) = if parent >= 0 then 12 * slotOf(parent) + nodeSide(node) else -1
+          plan(o + Plan.Above) = if parent >= 0 then nodeSlot(parent) else -1
+          plan(o + Plan.Block) = if parent >= 0 then 12 * nodeSlot(parent) + nodeSide(node) else -1
           plan(o + Plan.Folds) = 0
           plan(o + Plan.State1) = ref * SoftBodies.Stride
           plan(o + Plan.State2) = 0
@@ -408,9 +407,9 @@ private[sims] final class JointTrees:
     * ground, its body, the body's other joint, and on while each body holds two joints. Every
     * body there is folded into its two joints (see `fold`) when `joint` is the root, so each of
     * those joints, eliminated from the ground up, has the whole mass of the body above it for its
-    * pivot. Below a body that is not folded (where the tree branches), a joint would have only
-    * what the joints below left of its lower body: for a revolute joint, the one turn a revolute
-    * joint to the ground leaves, or nothing at all in a straight chain, a singular pivot.
+    * pivot. Below a body that is not folded (where the tree branches), a joint's pivot would
+    * hold only what the joints below it left of its lower body: after a revolute joint to the
+    * ground, one turn for the two rows of the revolute joint above it, a singular pivot.
     */
   private def onChain(joint: Int, ground: Int): Boolean =
     var t = ground
