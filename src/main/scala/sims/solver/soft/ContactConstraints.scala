@@ -150,7 +150,7 @@ private[sims] object ContactConstraints:
     while n < until do
       val c = order(n)
       val turnless = contacts.turnless(c)
-      if turnless == Turnless then solveTurnless(contacts, state, c, inverseH, contactSpeed, useBias)
+      if turnless == Turnless then n = solveTurnless(contacts, state, order, n, until, inverseH, contactSpeed, useBias)
       else
         val sA = contacts.bodyA(c) * SoftBodies.Stride
         val sB = contacts.bodyB(c) * SoftBodies.Stride
@@ -221,48 +221,59 @@ private[sims] object ContactConstraints:
             vBx += both * mBtx; vBy += both * mBty; wB += impulse0 * turnB0 + impulse1 * turnB1
         state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
         state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
-      n += 1
+        n += 1
 
-  /** `solve` for contact c turnless on both sides (two circles on their bodies' centres, or
-    * such a circle and a fixed body): one point, its normal row neither reads nor changes the
-    * bodies' spin, and its separation is the bodies' approach alone (an arm turned with a
-    * circle would move its outline off the point: a spinning ball would seem to part from
-    * what it rests on). A method of its own, not inlined into the loop: the loop's other
-    * contacts' code already holds as many inlined calls as the compiler allows.
+  /** `solve` for the run of contacts from `order(from)` on, while each is turnless on both
+    * sides (two circles on their bodies' centres, or such a circle and a fixed body; every
+    * contact of a ball pit), up to `until`; returns where the run ends. Such a contact has one
+    * point, its normal row neither reads nor changes the bodies' spin, and its separation is
+    * the bodies' approach alone (an arm turned with a circle would move its outline off the
+    * point: a spinning ball would seem to part from what it rests on). A method of its own, its
+    * loop a run rather than one contact a call: the general loop's code already holds as many
+    * inlined calls as the compiler allows, and HotSpot would not inline one contact's code,
+    * too long, into it either.
     */
-  private def solveTurnless(contacts: Contacts, state: Array[Double], c: Int, inverseH: Double,
-      contactSpeed: Double, useBias: Boolean): Unit =
+  private def solveTurnless(contacts: Contacts, state: Array[Double], order: Array[Int], from: Int, until: Int,
+      inverseH: Double, contactSpeed: Double, useBias: Boolean): Int =
     val hot = contacts.hot
     val masses = contacts.masses
-    val sA = contacts.bodyA(c) * SoftBodies.Stride
-    val sB = contacts.bodyB(c) * SoftBodies.Stride
-    val mA = masses(4 * c); val mB = masses(4 * c + 2)
-    var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY)
-    var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY)
-    val k = contacts.offset(c)
-    val nx = hot(k + NormalX); val ny = hot(k + NormalY)
-    val q = k + Header
-    val s = (state(sB + ShiftX) - state(sA + ShiftX)) * nx + (state(sB + ShiftY) - state(sA + ShiftY)) * ny +
-      hot(q + BaseSeparation)
-    val vn = (vBx - vAx) * nx + (vBy - vAy) * ny
-    val impulse = solveNormal(hot, k, q, s, vn, inverseH, contactSpeed, useBias, contacts.bouncing, contacts.records, c, 0)
-    // Products written left to right (see `solveNormal`).
-    vAx -= impulse * mA * nx; vAy -= impulse * mA * ny
-    vBx += impulse * mB * nx; vBy += impulse * mB * ny
-    if !useBias then
-      // Friction, as for any one-point contact.
-      val iA = masses(4 * c + 1); val iB = masses(4 * c + 3)
-      var wA = state(sA + AngularVelocity); var wB = state(sB + AngularVelocity)
-      val tx = -ny; val ty = nx
-      val rtA = hot(q + AnchorAX) * ty - hot(q + AnchorAY) * tx
-      val rtB = hot(q + AnchorBX) * ty - hot(q + AnchorBY) * tx
-      val vt = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB - wA * rtA)
-      val friction = solveFriction(hot, q, hot(k + Friction), vt)
-      vAx -= friction * mA * tx; vAy -= friction * mA * ty; wA -= friction * iA * rtA
-      vBx += friction * mB * tx; vBy += friction * mB * ty; wB += friction * iB * rtB
-      state(sA + AngularVelocity) = wA; state(sB + AngularVelocity) = wB
-    state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy
-    state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy
+    val turnless = contacts.turnless
+    val bouncing = contacts.bouncing
+    val records = contacts.records
+    var n = from
+    while n < until && turnless(order(n)) == Turnless do
+      val c = order(n)
+      val sA = contacts.bodyA(c) * SoftBodies.Stride
+      val sB = contacts.bodyB(c) * SoftBodies.Stride
+      val mA = masses(4 * c); val mB = masses(4 * c + 2)
+      var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY)
+      var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY)
+      val k = contacts.offset(c)
+      val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+      val q = k + Header
+      val s = (state(sB + ShiftX) - state(sA + ShiftX)) * nx + (state(sB + ShiftY) - state(sA + ShiftY)) * ny +
+        hot(q + BaseSeparation)
+      val vn = (vBx - vAx) * nx + (vBy - vAy) * ny
+      val impulse = solveNormal(hot, k, q, s, vn, inverseH, contactSpeed, useBias, bouncing, records, c, 0)
+      // Products written left to right (see `solveNormal`).
+      vAx -= impulse * mA * nx; vAy -= impulse * mA * ny
+      vBx += impulse * mB * nx; vBy += impulse * mB * ny
+      if !useBias then
+        // Friction, as for any one-point contact.
+        val iA = masses(4 * c + 1); val iB = masses(4 * c + 3)
+        var wA = state(sA + AngularVelocity); var wB = state(sB + AngularVelocity)
+        val tx = -ny; val ty = nx
+        val rtA = hot(q + AnchorAX) * ty - hot(q + AnchorAY) * tx
+        val rtB = hot(q + AnchorBX) * ty - hot(q + AnchorBY) * tx
+        val vt = ((vBx - vAx) * tx + (vBy - vAy) * ty) + (wB * rtB - wA * rtA)
+        val friction = solveFriction(hot, q, hot(k + Friction), vt)
+        vAx -= friction * mA * tx; vAy -= friction * mA * ty; wA -= friction * iA * rtA
+        vBx += friction * mB * tx; vBy += friction * mB * ty; wB += friction * iB * rtB
+        state(sA + AngularVelocity) = wA; state(sB + AngularVelocity) = wB
+      state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy
+      state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy
+      n += 1
+    n
 
   /** The current separation of the point at q, normal (nx, ny), from its bodies' motion since the
     * step began: B's displacement relative to A's (dpx, dpy) and each body's turn (cosine, sine).
