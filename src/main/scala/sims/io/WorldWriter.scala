@@ -217,10 +217,13 @@ private[io] object WorldWriter:
           out.writeByte(table.turnless(c))
           ContactTable.saved(table, c).foreach(out.writeDouble)
           // A contact has room for two points (ids, cold block); the slots of a missing one hold
-          // whatever an earlier contact left there. Written as zeros: the same world, the same bytes.
+          // whatever an earlier contact left there, and so do the slots for keeping of a contact
+          // never kept. Written as zeros: the same world, the same bytes.
           val used = ContactTable.ColdHeader + table.pointCount(c) * ContactTable.ColdPoint
+          val uncached = table.side(c) == ContactTable.Uncached
           for k <- 0 until ContactTable.ColdStride do
-            out.writeDouble(if k < used then table.cold(table.coldOffset(c) + k) else 0.0)
+            val written = k < used && !(uncached && ContactTable.cachedSlot(k))
+            out.writeDouble(if written then table.cold(table.coldOffset(c) + k) else 0.0)
 
   /** The soft step's data of `world`, if it has stepped with the soft step. */
   private def softWorkspace(world: World): Option[SoftWorkspace] =

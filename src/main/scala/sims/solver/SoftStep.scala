@@ -231,7 +231,13 @@ final case class SoftStep(
 
   private def prepare(world: World, workspace: SoftWorkspace, h: Double): Unit =
     val rate = 1 / h
-    workspace.stiffness.set(contactHertz, 0.25 * rate, contactDampingRatio, staticContactFactor, contactLoadDepth, h)
+    val table = workspace.table
+    // The carried softness of stiffened contacts is used again only if worked out for the same substep and damping.
+    val reuses = table.committed.stiffenedH == h && table.committed.stiffenedZeta == contactDampingRatio
+    workspace.stiffness.set(contactHertz, 0.25 * rate, contactDampingRatio, staticContactFactor, contactLoadDepth, h,
+      reuses)
+    table.current.stiffenedH = h
+    table.current.stiffenedZeta = contactDampingRatio
     workspace.passes.prepare(pool, world.gravity.x, world.gravity.y)
     val context = workspace.context
     context.bodies = workspace.bodies

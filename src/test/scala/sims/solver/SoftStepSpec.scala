@@ -163,6 +163,36 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
     hash(a) shouldBe reference
   }
 
+  test("stiffened contacts keep their softness from step to step only while the damping and substeps stay") {
+    // A heavy box on two light ones: loaded contacts, stiffened beyond the plain softness.
+    def pile(): World =
+      val world = World()
+      world.solver = SoftStep()
+      world += ground()
+      for x <- Seq(-0.3, 0.3) do
+        val light = Rectangle(0.1, 0.1, 1)
+        light.pos = Vector2D(x, 0.1)
+        world += light.asBody
+      val heavy = Rectangle(0.5, 0.1, 100)
+      heavy.pos = Vector2D(0, 0.3)
+      world += heavy.asBody
+      world
+    def stiffened(world: World): Int =
+      val contacts = world.workspace(classOf[soft.SoftWorkspace], soft.SoftWorkspace()).table.committed
+      (0 until contacts.count).count(c => contacts.records(c * soft.ContactTable.RecordStride + soft.ContactTable.Stiffened) > 0)
+    for changed <- Seq(SoftStep(contactDampingRatio = 3), SoftStep(substeps = 6)) do
+      val carried = pile()
+      val fresh = pile()
+      for _ <- 1 to 60 do { carried.step(); fresh.step() }
+      stiffened(carried) should be > 0
+      // A snapshot restored forgets the carried softness: the next step works it out again.
+      fresh.restore(fresh.snapshot())
+      carried.solver = changed
+      fresh.solver = changed
+      for _ <- 1 to 60 do { carried.step(); fresh.step() }
+      hash(carried) shouldBe hash(fresh)
+  }
+
   test("a step that fails leaves the contacts and joints' impulses as they were: the run goes on identically") {
     // The step fails in its post-step hook, after the soft step committed its contacts and
     // the joints kept their impulses: all of it must be undone.

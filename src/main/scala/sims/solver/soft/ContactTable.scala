@@ -226,7 +226,8 @@ private[sims] object ContactTable:
   // for bouncing contacts, and what the step's preparation and end read.
   inline val Restitution = 0
   inline val Stiffness = 1 // the angular frequency a loaded contact was stiffened to (0: never)
-  inline val RecordHeader = 2
+  inline val Stiffened = 2 // the stiffness whose softness the hot block holds, carried with it (0: the plain softness)
+  inline val RecordHeader = 3
   // Offsets in a point's record.
   inline val MaxNormalImpulse = 0 // the largest normal impulse applied in one solve
   inline val RelativeVelocity = 1 // the normal approach: at the start, plus gravity and forces until the point pushed
@@ -295,6 +296,17 @@ private[sims] object ContactTable:
   inline val ColdPoint = 8
   inline val ColdStride = ColdHeader + 2 * ColdPoint
 
+  /** `Contacts.side` of a contact never kept (two circles on their bodies' centres, whose pairs
+    * are collided every step): its cold block's placements and anchors for keeping are not
+    * written (see `cachedSlot`).
+    */
+  inline val Uncached = -2
+
+  /** Whether slot k of a cold block holds what keeping a contact compares with: the bodies'
+    * placements, or a point's anchors and separation as computed.
+    */
+  def cachedSlot(k: Int): Boolean = k < ColdHeader || (k - ColdHeader) % ColdPoint >= CachedAnchorAX
+
 /** One generation of contacts, in flat arrays: contact c has shapes, bodies (their indices),
   * the pair's key, point count and ids, the polygon side a polygon-circle contact was measured
   * from, a hot block of doubles at `offset(c)` in `hot`, a record at `c * RecordStride` in
@@ -322,6 +334,10 @@ private[sims] final class Contacts:
     * twice; the built-in one lists each pair once): the index then looks for a pair's last.
     */
   var pairsRepeat: Boolean = false
+  /** The substep and damping ratio this generation's stiffened contacts (see
+    * [[ContactTable.Stiffened]]) had their softness worked out for; NaN until it is prepared.
+    */
+  var stiffenedH, stiffenedZeta: Double = Double.NaN
   var shapeA, shapeB: Array[Shape] = new Array[Shape](16)
   var bodyA, bodyB: Array[Int] = new Array[Int](16)
   var keys: Array[Long] = new Array[Long](16)
@@ -429,6 +445,8 @@ private[sims] final class Contacts:
     active = 0
     bouncing = false
     pairsRepeat = false
+    stiffenedH = Double.NaN
+    stiffenedZeta = Double.NaN
     hotSize = 0
     coldSize = 0
     hotLimit = Int.MaxValue

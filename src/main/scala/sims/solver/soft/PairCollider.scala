@@ -117,11 +117,13 @@ private[sims] final class PairCollider:
     val contacts = target
     val points = old.pointCount(last)
     val k = old.offset(last)
-    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, 0.0, old.turnless(last))
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, -1, old.turnless(last))
     contacts.side(c) = old.side(last)
     ShortCopy.doubles(old.hot, k, contacts.hot, contacts.offset(c), Header + points * HotPoint)
     ShortCopy.doubles(old.cold, old.coldOffset(last), contacts.cold, contacts.coldOffset(c), ColdStride)
     ShortCopy.doubles(old.records, last * RecordStride, contacts.records, c * RecordStride, RecordStride)
+    // Asleep, the pair is not prepared again: its softness may be of settings changed since.
+    contacts.records(c * RecordStride + Stiffened) = 0
     contacts.ids(2 * c) = old.ids(2 * last)
     contacts.ids(2 * c + 1) = old.ids(2 * last + 1)
 
@@ -163,7 +165,7 @@ private[sims] final class PairCollider:
     */
   private def addManifold(a: Shape, b: Shape, key: Long, last: Int, turnless: Int): Unit =
     val contacts = target
-    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount, stiffnessOf(last), turnless)
+    val c = start(contacts, a, b, key, manifold.normalX, manifold.normalY, manifold.pointCount, last, turnless)
     contacts.side(c) = manifold.polygonSide
     cachePlacements(contacts, c)
     var p = 0
@@ -176,16 +178,15 @@ private[sims] final class PairCollider:
 
   /** `addManifold` for two circles on their bodies' centres (one point, id 0), turned to the
     * normal they meet along if they are apart and approaching (see `aimAtImpact`): each slot
-    * written once.
+    * written once. A pair of circles is never kept (see `collide`), so nothing is cached for
+    * `keeps`: the most common contact of a pile of balls, and the cheapest.
     */
   private def addCircles(circleA: Circle, circleB: Circle, key: Long, last: Int): Unit =
     val contacts = target
-    val c = start(contacts, circleA, circleB, key, manifold.normalX, manifold.normalY, 1, stiffnessOf(last), Turnless)
-    contacts.side(c) = manifold.polygonSide
-    cachePlacements(contacts, c)
+    val c = start(contacts, circleA, circleB, key, manifold.normalX, manifold.normalY, 1, last, Turnless)
+    contacts.side(c) = Uncached
     if !aimAtImpact(contacts, c, circleA, circleB) then
       setPoint(contacts, c, 0, manifold.x(0), manifold.y(0), manifold.separation(0))
-      cacheAnchors(contacts, c, 0)
     contacts.ids(2 * c) = manifold.id(0)
     warmStartPoint(contacts, c, 0, last)
 
@@ -266,7 +267,6 @@ private[sims] final class PairCollider:
       cold(r + PointX) = bodies.startX(a) + hot(q + AnchorAX)
       cold(r + PointY) = bodies.startY(a) + hot(q + AnchorAY)
       cold(r + Separation) = dx * nx + dy * ny - reach
-      cacheAnchors(contacts, c, 0)
       true
     else false
 
@@ -305,8 +305,8 @@ private[sims] final class PairCollider:
     val contacts = target
     val points = old.pointCount(last)
     val k = old.offset(last)
-    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points,
-      old.records(last * RecordStride + Stiffness), PairCollider.turnless(circles, a, b))
+    val c = start(contacts, a, b, key, old.hot(k + NormalX), old.hot(k + NormalY), points, last,
+      PairCollider.turnless(circles, a, b))
     contacts.side(c) = old.side(last)
     val hot = contacts.hot
     val cold = contacts.cold
@@ -392,7 +392,7 @@ private[sims] final class PairCollider:
       val contacts = target
       val nx = collision.normalX
       val ny = collision.normalY
-      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count, stiffnessOf(last),
+      val c = start(contacts, collision.shape1, collision.shape2, key, nx, ny, count, last,
         PairCollider.turnless(null, collision.shape1, collision.shape2))
       contacts.side(c) = -1
       val separation = -Collision.overlapAlong(collision.shape1, collision.shape2, nx, ny)
@@ -419,10 +419,11 @@ private[sims] final class PairCollider:
 
   /** Starts contact of shapes (a, b) with normal (nx, ny) from a to b and `points` points: its
     * bodies, key and the pair's friction and restitution (products of the shapes', as in the
-    * classic step).
+    * classic step), and from the pair's last contact `last` (if any) its stiffness and softness
+    * (see [[ContactStiffness]]).
     */
   private def start(contacts: Contacts, a: Shape, b: Shape, key: Long, nx: Double, ny: Double, points: Int,
-      stiffness: Double, turnless: Int): Int =
+      last: Int, turnless: Int): Int =
     val c = contacts.add(points)
     // Storing a reference costs the garbage collector's write barrier, and the slot usually holds
     // these shapes already: a generation's slots are reused every other step, in much the same order.
@@ -441,12 +442,19 @@ private[sims] final class PairCollider:
     val restitution = a.restitution * b.restitution
     contacts.records(c * RecordStride + Restitution) = restitution
     if restitution != 0 then contacts.bouncing = true
-    contacts.records(c * RecordStride + Stiffness) = stiffness
+    val record = c * RecordStride
+    if last < 0 then
+      contacts.records(record + Stiffness) = 0
+      contacts.records(record + Stiffened) = 0
+    else
+      val old = table.committed
+      contacts.records(record + Stiffness) = old.records(last * RecordStride + Stiffness)
+      contacts.records(record + Stiffened) = old.records(last * RecordStride + Stiffened)
+      val from = old.offset(last)
+      contacts.hot(k + BiasRate) = old.hot(from + BiasRate)
+      contacts.hot(k + MassScale) = old.hot(from + MassScale)
+      contacts.hot(k + ImpulseScale) = old.hot(from + ImpulseScale)
     c
-
-  /** The stiffness the last step's contact `last` of the pair had (0 if none: see [[ContactStiffness]]). */
-  private def stiffnessOf(last: Int): Double =
-    if last >= 0 then table.committed.records(last * RecordStride + Stiffness) else 0.0
 
 private[sims] object PairCollider:
   /** The turnless sides ([[ContactTable.TurnlessA]], [[ContactTable.TurnlessB]]) of a contact of
