@@ -370,6 +370,27 @@ class SoftStepSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChec
         (point.y - (body.pos.y - 0.1)).abs should be < 1e-3
   }
 
+  test("a spinning ball reaches no further: a speculative contact needs an approach its outline can make") {
+    // Two bodies at rest 10 cm apart, no gravity: the one on the left spins at 60 rad/s. A
+    // centred ball's spin moves no point of its outline; a square's corners, 35 cm from its
+    // centre, may sweep 35 cm in the step: only the square has a speculative contact.
+    def contactsBeside(spinning: Shape): Int =
+      val world = World()
+      world.gravity = Vector2D.Null
+      world.solver = SoftStep(workers = 1)
+      spinning.pos = Vector2D(0, 0)
+      val body = spinning.asBody
+      body.angularVelocity = 60
+      world += body
+      val neighbour = Circle(0.25, 1)
+      neighbour.pos = Vector2D(0.6, 0)
+      world += neighbour.asBody
+      world.step()
+      world.contacts.size
+    contactsBeside(Circle(0.25, 1)) shouldBe 0
+    contactsBeside(Rectangle(0.25, 0.25, 1)) shouldBe 1
+  }
+
   test("the direct solver makes every joint of a chain exact: after a relax pass no link moves apart") {
     val world = World()
     world.gravity = Vector2D.Null

@@ -80,15 +80,16 @@ private[sims] final class PairCollider:
       return
     val key = PairKey.of(a, b)
     val last = lastOf(key)
+    val circles = PairCollider.centredCircles(functions, a, b)
     // For every pair, kept or not: it also refuses speeds too large to compute with.
-    val approach = approachBound(a.body.index, b.body.index)
+    val approach = approachBound(a.body.index, b.body.index, circles)
     if functions == null then
       val collision = world.collisionPipeline.narrowphase.collideGeneral(methods, a, b)
       if collision != null then addCollision(collision, key, last)
     else if last >= 0 && persistence > 0 && functions.kind != PairKind.CircleCircle &&
       keeps(table.committed, last, a, b) then
       keep(last, a, b, key, functions)
-    else if functions.kind == PairKind.CircleCircle && a.body.allCentred && b.body.allCentred then
+    else if circles == Turnless then // two circles on their bodies' centres
       val circleA = a.asInstanceOf[Circle]
       val circleB = b.asInstanceOf[Circle]
       CircleManifold.collide(circleA, circleB, speculativeDistance + timeStep * approach, manifold)
@@ -96,14 +97,14 @@ private[sims] final class PairCollider:
     else
       functions.manifold(a, b, if last >= 0 then table.committed.side(last) else -1,
         speculativeDistance + timeStep * approach, linearSlop, manifold)
-      if manifold.pointCount > 0 then addManifold(a, b, key, last, PairCollider.turnless(functions, a, b))
+      if manifold.pointCount > 0 then addManifold(a, b, key, last, PairCollider.turnless(circles, a, b))
 
   /** Whether shapes a and b touch as the soft step counts it: their manifold has a point. */
   def touches(a: Shape, b: Shape): Boolean =
     val narrowphase = world.collisionPipeline.narrowphase
     val methods = resolve(a, b)
-    val approach = approachBound(a.body.index, b.body.index)
     val functions = methods.functions
+    val approach = approachBound(a.body.index, b.body.index, PairCollider.centredCircles(functions, a, b))
     if functions == null then narrowphase.collideGeneral(methods, a, b) != null
     else
       functions.manifold(a, b, -1, speculativeDistance + timeStep * approach, linearSlop, manifold)
@@ -127,20 +128,23 @@ private[sims] final class PairCollider:
     contacts.ids(2 * c) = old.ids(2 * last)
     contacts.ids(2 * c + 1) = old.ids(2 * last + 1)
 
-  /** An upper bound of how fast two bodies' points can approach each other at the start of
-    * the step: |vA - vB| + |wA| extentA + |wB| extentB. Over the step they close at most this
-    * times the time step, so points that far apart are speculative points: a fast ball is
-    * caught where it would land instead of sinking deep into a pile within one step (and being
-    * pushed out of it at speed).
+  /** An upper bound of how fast two bodies' shapes can approach each other at the start of
+    * the step: |vA - vB| + |wA| extentA + |wB| extentB, without the spin of a side that is a
+    * circle on its body's centre (`circles`, [[centredCircles]]' bits: its turn moves no point of
+    * its outline towards the other shape). Over the step they close at most this times the time
+    * step, so points that far apart are speculative points: a fast ball is caught where it would
+    * land instead of sinking deep into a pile within one step (and being pushed out of it at
+    * speed).
     */
-  private def approachBound(a: Int, b: Int): Double =
+  private def approachBound(a: Int, b: Int, circles: Int): Double =
     val state = bodies.state
     val sA = a * SoftBodies.Stride
     val sB = b * SoftBodies.Stride
     val dvx = state(sB + VelocityX) - state(sA + VelocityX)
     val dvy = state(sB + VelocityY) - state(sA + VelocityY)
-    val bound = math.sqrt(dvx * dvx + dvy * dvy) + math.abs(state(sA + AngularVelocity)) * bodies.bodies(a).extent +
-      math.abs(state(sB + AngularVelocity)) * bodies.bodies(b).extent
+    var bound = math.sqrt(dvx * dvx + dvy * dvy)
+    if (circles & TurnlessA) == 0 then bound += math.abs(state(sA + AngularVelocity)) * bodies.bodies(a).extent
+    if (circles & TurnlessB) == 0 then bound += math.abs(state(sB + AngularVelocity)) * bodies.bodies(b).extent
     // Its square overflows from 1.3e154 m/s on: speeds at which the contacts' products (a
     // speed times an arm, a mass, an inverse inertia) overflow or lose all meaning.
     if !java.lang.Double.isFinite(bound * bound) then overflow(a, b, bound)
