@@ -100,30 +100,66 @@ private[sims] object ContactConstraints:
     var n = from
     while n < until do
       val c = order(n)
+      if contacts.turnless(c) == Turnless then n = warmStartTurnless(contacts, state, order, n, until)
+      else
+        val sA = contacts.bodyA(c) * SoftBodies.Stride
+        val sB = contacts.bodyB(c) * SoftBodies.Stride
+        val mA = masses(4 * c); val iA = masses(4 * c + 1)
+        val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
+        var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
+        var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
+        val k = contacts.offset(c)
+        val nx = hot(k + NormalX); val ny = hot(k + NormalY)
+        val two = contacts.pointCount(c) == 2
+        var q = k + Header
+        var p = 0
+        while p == 0 || (p == 1 && two) do
+          val normal = hot(q + NormalImpulse)
+          val tangent = hot(q + TangentImpulse)
+          // n normal + t tangent, t = n.leftNormal = (-ny, nx)
+          val px = nx * normal - ny * tangent
+          val py = ny * normal + nx * tangent
+          vAx -= px * mA; vAy -= py * mA; wA -= (hot(q + AnchorAX) * py - hot(q + AnchorAY) * px) * iA
+          vBx += px * mB; vBy += py * mB; wB += (hot(q + AnchorBX) * py - hot(q + AnchorBY) * px) * iB
+          q += HotPoint
+          p += 1
+        state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
+        state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
+        n += 1
+
+  /** `warmStart` for the run of contacts from `order(from)` on, while each is turnless on both
+    * sides (see `solveTurnless`), up to `until`; returns where the run ends. Its one point's
+    * normal impulse acts along both arms and turns neither body (as in the passes, which give
+    * it no turn); the tangent impulse turns them by the arms' moments about the tangent.
+    */
+  private def warmStartTurnless(contacts: Contacts, state: Array[Double], order: Array[Int], from: Int,
+      until: Int): Int =
+    val hot = contacts.hot
+    val masses = contacts.masses
+    val turnless = contacts.turnless
+    var n = from
+    while n < until && turnless(order(n)) == Turnless do
+      val c = order(n)
       val sA = contacts.bodyA(c) * SoftBodies.Stride
       val sB = contacts.bodyB(c) * SoftBodies.Stride
       val mA = masses(4 * c); val iA = masses(4 * c + 1)
       val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
-      var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
-      var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
-      val two = contacts.pointCount(c) == 2
-      var q = k + Header
-      var p = 0
-      while p == 0 || (p == 1 && two) do
-        val normal = hot(q + NormalImpulse)
-        val tangent = hot(q + TangentImpulse)
-        // n normal + t tangent, t = n.leftNormal = (-ny, nx)
-        val px = nx * normal - ny * tangent
-        val py = ny * normal + nx * tangent
-        vAx -= px * mA; vAy -= py * mA; wA -= (hot(q + AnchorAX) * py - hot(q + AnchorAY) * px) * iA
-        vBx += px * mB; vBy += py * mB; wB += (hot(q + AnchorBX) * py - hot(q + AnchorBY) * px) * iB
-        q += HotPoint
-        p += 1
-      state(sA + VelocityX) = vAx; state(sA + VelocityY) = vAy; state(sA + AngularVelocity) = wA
-      state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
+      val q = k + Header
+      val normal = hot(q + NormalImpulse)
+      val tangent = hot(q + TangentImpulse)
+      val px = nx * normal - ny * tangent
+      val py = ny * normal + nx * tangent
+      // r x t for t = (-ny, nx), written as the relax pass's friction writes it.
+      val rtA = hot(q + AnchorAX) * nx - hot(q + AnchorAY) * -ny
+      val rtB = hot(q + AnchorBX) * nx - hot(q + AnchorBY) * -ny
+      state(sA + VelocityX) -= px * mA; state(sA + VelocityY) -= py * mA
+      state(sA + AngularVelocity) -= tangent * iA * rtA
+      state(sB + VelocityX) += px * mB; state(sB + VelocityY) += py * mB
+      state(sB + AngularVelocity) += tangent * iB * rtB
       n += 1
+    n
 
   /** One pass over the contacts `order(from until until)` (see [[ContactBlocks]]): normal
     * impulses (with the soft bias when `useBias`, the solve pass; without, the relax pass), then,
