@@ -36,14 +36,17 @@ private[sims] final class UniformGrid extends Broadphase:
   // cells of its bounds' lower-left corner and the fine cells of its upper-right one. Cell
   // functions are monotonic, so the cell of the corner of two bounds' overlap, cell(max(a, b)),
   // is max(cell(a), cell(b)): computed once per shape instead of once per candidate.
-  private var boxMinX, boxMinY, boxMaxX, boxMaxY = new Array[Double](0)
+  // The bounds are four doubles a shape in one array, min x, min y, max x, max y, and the fine
+  // cells four Ints a shape, x0, y0, x1, y1: the pair search reads a partner's together, one
+  // cache line or two where four arrays took four.
+  private var boxes = new Array[Double](0)
   private var placement = new Array[Byte](0)
   // Per shape, from the last update: its body, and whether the filter's answer for it follows
   // from that alone (see `filterKind`): a pair of two such shapes is judged from these arrays,
   // without reading the shapes and bodies (a cache miss each, for every candidate).
   private var owner = new Array[Body](0)
   private var filterKind = new Array[Byte](0)
-  private var fineX0, fineY0, fineX1, fineY1 = new Array[Int](0)
+  private var fines = new Array[Int](0)
   // Coarse cells as Longs: floor(coordinate / gridSide) is exact in a Long for any coordinate
   // up to 1.8e19 gridSides, so far from the origin pairs keep SiMS's order (in an Int it
   // saturates beyond 2^31 cells, 4.3e9 m with 2 m cells). Only the coarse grid's order reads
@@ -127,7 +130,7 @@ private[sims] final class UniformGrid extends Broadphase:
             margin + sweep * (math.sqrt(b.vx * b.vx + b.vy * b.vy) + math.abs(b.w) * b.extent)
         val x0 = s.minX - reach; val y0 = s.minY - reach
         val x1 = s.maxX + reach; val y1 = s.maxY + reach
-        boxMinX(i) = x0; boxMinY(i) = y0; boxMaxX(i) = x1; boxMaxY(i) = y1
+        boxes(4 * i) = x0; boxes(4 * i + 1) = y0; boxes(4 * i + 2) = x1; boxes(4 * i + 3) = y1
         placement(i) =
           if (cellIndex(x1, side) - cellIndex(x0, side) + 1) * (cellIndex(y1, side) - cellIndex(y0, side) + 1) >
               Defaults.LargeShapeCells
@@ -192,8 +195,8 @@ private[sims] final class UniformGrid extends Broadphase:
     var i = from
     while i < until do
       if placement(i) == Fine then
-        fineX0(i) = fineCell(boxMinX(i) - originX, perFine); fineX1(i) = fineCell(boxMaxX(i) - originX, perFine)
-        fineY0(i) = fineCell(boxMinY(i) - originY, perFine); fineY1(i) = fineCell(boxMaxY(i) - originY, perFine)
+        fines(4 * i) = fineCell(boxMinX(i) - originX, perFine); fines(4 * i + 2) = fineCell(boxMaxX(i) - originX, perFine)
+        fines(4 * i + 1) = fineCell(boxMinY(i) - originY, perFine); fines(4 * i + 3) = fineCell(boxMaxY(i) - originY, perFine)
         val cells = cellCount(fineX0(i), fineX1(i), fineY0(i), fineY1(i))
         if cells > FineShapeCells then
           placement(i) = Wide
@@ -648,16 +651,23 @@ private[sims] final class UniformGrid extends Broadphase:
     groupKeys(g) = key
     groupSize += 1
 
+  private inline def boxMinX(i: Int): Double = boxes(4 * i)
+  private inline def boxMinY(i: Int): Double = boxes(4 * i + 1)
+  private inline def boxMaxX(i: Int): Double = boxes(4 * i + 2)
+  private inline def boxMaxY(i: Int): Double = boxes(4 * i + 3)
+  private inline def fineX0(i: Int): Int = fines(4 * i)
+  private inline def fineY0(i: Int): Int = fines(4 * i + 1)
+  private inline def fineX1(i: Int): Int = fines(4 * i + 2)
+  private inline def fineY1(i: Int): Int = fines(4 * i + 3)
+
   private def ensureCapacity(n: Int): Unit =
-    if boxMinX.length < n then
-      val capacity = math.max(n, 2 * boxMinX.length)
-      boxMinX = new Array[Double](capacity); boxMinY = new Array[Double](capacity)
-      boxMaxX = new Array[Double](capacity); boxMaxY = new Array[Double](capacity)
+    if placement.length < n then
+      val capacity = math.max(n, 2 * placement.length)
+      boxes = new Array[Double](4 * capacity)
       placement = new Array[Byte](capacity)
       owner = new Array[Body](capacity); filterKind = new Array[Byte](capacity)
       coarseX0 = new Array[Long](capacity); coarseY0 = new Array[Long](capacity)
-      fineX0 = new Array[Int](capacity); fineY0 = new Array[Int](capacity)
-      fineX1 = new Array[Int](capacity); fineY1 = new Array[Int](capacity)
+      fines = new Array[Int](4 * capacity)
       foundStamp = new Array[Int](capacity)
       queryStamp = 0
 
