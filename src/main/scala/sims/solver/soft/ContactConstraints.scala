@@ -151,9 +151,10 @@ private[sims] object ContactConstraints:
       val tangent = hot(q + TangentImpulse)
       val px = nx * normal - ny * tangent
       val py = ny * normal + nx * tangent
-      // r x t for t = (-ny, nx), written as the relax pass's friction writes it.
-      val rtA = hot(q + AnchorAX) * nx - hot(q + AnchorAY) * -ny
-      val rtB = hot(q + AnchorBX) * nx - hot(q + AnchorBY) * -ny
+      // The arms' moments about the tangent, as the relax pass's friction has them.
+      val tx = -ny; val ty = nx
+      val rtA = hot(q + AnchorAX) * ty - hot(q + AnchorAY) * tx
+      val rtB = hot(q + AnchorBX) * ty - hot(q + AnchorBY) * tx
       state(sA + VelocityX) -= px * mA; state(sA + VelocityY) -= py * mA
       state(sA + AngularVelocity) -= tangent * iA * rtA
       state(sB + VelocityX) += px * mB; state(sB + VelocityY) += py * mB

@@ -452,12 +452,15 @@ private[sims] final class PairCollider:
       contacts.records(record + Stiffened) = 0
     else
       val old = table.committed
+      val stiffened = old.records(last * RecordStride + Stiffened)
       contacts.records(record + Stiffness) = old.records(last * RecordStride + Stiffness)
-      contacts.records(record + Stiffened) = old.records(last * RecordStride + Stiffened)
-      val from = old.offset(last)
-      contacts.hot(k + BiasRate) = old.hot(from + BiasRate)
-      contacts.hot(k + MassScale) = old.hot(from + MassScale)
-      contacts.hot(k + ImpulseScale) = old.hot(from + ImpulseScale)
+      contacts.records(record + Stiffened) = stiffened
+      // The softness that goes with it; a contact of the plain softness gets it in `prepare`.
+      if stiffened != 0 then
+        val from = old.offset(last)
+        contacts.hot(k + BiasRate) = old.hot(from + BiasRate)
+        contacts.hot(k + MassScale) = old.hot(from + MassScale)
+        contacts.hot(k + ImpulseScale) = old.hot(from + ImpulseScale)
     c
 
 private[sims] object PairCollider:
