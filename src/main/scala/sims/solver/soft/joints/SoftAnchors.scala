@@ -12,8 +12,10 @@ import sims.solver.soft.SoftBodies.*
 private[sims] final class SoftAnchors:
   /** Index of body 1 and of body 2 in the step's arrays. */
   var index1, index2 = 0
-  private var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
-  private var startCentresX, startCentresY = 0.0 // centre2 - centre1 at the start of the step
+  /** The arms at the start of the step. */
+  private[joints] var startArm1X, startArm1Y, startArm2X, startArm2Y = 0.0
+  /** Body 2's centre minus body 1's at the start of the step. */
+  private[joints] var startCentresX, startCentresY = 0.0
   /** The arms from each body's centre to its point, turned with the bodies (set by `measure`). */
   var arm1X, arm1Y, arm2X, arm2Y = 0.0
   /** Body 2's centre minus body 1's (set by `measure`). */
