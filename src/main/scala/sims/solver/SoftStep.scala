@@ -330,6 +330,7 @@ final case class SoftStep(
 
   private def finish(world: World, workspace: SoftWorkspace): Unit =
     val finite = workspace.passes.finish(pool, world)
+    workspace.joints.trees.storeImpulses()
     val joints = workspace.joints.constraints
     var i = 0
     while i < joints.length do
