@@ -1,9 +1,14 @@
 // The browser benchmark: every bench scene with SiMS (Scala.js: both steps linked to JavaScript,
 // the soft step linked to WebAssembly too) and with planck, matter-js and Rapier (WebAssembly),
-// each built from the same layout values, timed alike (warm-up steps, then timed steps), and
-// checked for sanity with the same criteria after the run.
+// each built from the same layout values, timed alike (a copy of the scene stepped for a while and
+// thrown away, so that the browser has compiled the engine's code; then warm-up steps, then timed
+// steps), and checked for sanity with the same criteria after the run.
 import RAPIER from "./node_modules/@dimforge/rapier2d-compat/dist/rapier.mjs";
 
+// Each engine steps a copy of each scene this long before its timed copy is built: the browser
+// compiles a function to its fastest code only once it has run often (a chain's joint solver, run
+// for the first time by chain-100, took twice its settled time in the first 300 steps).
+const CodeWarmUpMillis = 1000;
 const WarmUpSteps = 100;
 const TimedSteps = 200;
 const ChunkSteps = 10; // steps between the page's pauses, so that it stays responsive (the driver polls it)
@@ -88,6 +93,7 @@ function rapierWorld(layout) {
   });
   return {
     step: () => world.step(),
+    free: () => world.free(),
     state: () => bodies.flatMap((b) => { const t = b.translation(); return [t.x, t.y, b.rotation()]; }),
     jointLengths: () => joints.map(([i, j]) => { const p = bodies[i].translation(), q = bodies[j].translation();
       return Math.hypot(q.x - p.x, q.y - p.y); }),
@@ -155,6 +161,16 @@ async function run() {
   for (const name of simsBench.names) {
     const layout = simsBench.layout(name);
     const names = Object.keys(engines);
+    for (const engineName of names) {
+      status.textContent = `Compiling ${engineName} on a copy of ${name}…`;
+      const copy = engines[engineName](name);
+      const until = performance.now() + CodeWarmUpMillis;
+      do {
+        for (let c = 0; c < ChunkSteps; c++) copy.step();
+        await pause();
+      } while (performance.now() < until);
+      if (copy.free) copy.free();
+    }
     status.textContent = `Building ${name}…`;
     await pause();
     const built = names.map((engineName) => engines[engineName](name));
@@ -187,7 +203,7 @@ async function run() {
   table.innerHTML = "<tr><th>scene</th><th>engine</th><th>ms/step</th><th>sanity</th></tr>" +
     results.map((r) => `<tr><td>${r.scene}</td><td>${r.engine}</td><td>${r.millis.toFixed(3)}</td><td>${r.ok ? "ok" : "FAILED"}: ${r.detail}</td></tr>`).join("");
   status.textContent = "Done.";
-  window.benchResults = { warmUpSteps: WarmUpSteps, timedSteps: TimedSteps, userAgent: navigator.userAgent,
+  window.benchResults = { codeWarmUpMillis: CodeWarmUpMillis, warmUpSteps: WarmUpSteps, timedSteps: TimedSteps, userAgent: navigator.userAgent,
     clockStepMillis: clockStep(), results };
 }
 

@@ -40,7 +40,8 @@ object BrowserBench:
       val errors = chromium.consoleErrors()
       require(errors.isEmpty, s"console errors: ${errors.mkString("; ")}")
       val clockStep = results("clockStepMillis").asInstanceOf[Number].doubleValue
-      val section = markdown(rows, results("warmUpSteps").toString, results("timedSteps").toString,
+      val section = markdown(rows, results("codeWarmUpMillis").toString, results("warmUpSteps").toString,
+        results("timedSteps").toString,
         results("userAgent").toString, clockStep)
       println(section)
       val document = File(args(1)).toPath
@@ -55,7 +56,7 @@ object BrowserBench:
       val next = document.indexOf("\n## ", start + 1)
       document.substring(0, start + 1) + section + (if next < 0 then "" else document.substring(next))
 
-  private[playground] def markdown(rows: Seq[Row], warmUp: String, timed: String, agent: String,
+  private[playground] def markdown(rows: Seq[Row], codeWarmUp: String, warmUp: String, timed: String, agent: String,
       clockStep: Double): String =
     val engines = rows.map(_.engine).distinct
     val scenes = rows.map(_.scene).distinct
@@ -93,7 +94,9 @@ object BrowserBench:
        |Wasm": the same sources, the same bits, by Scala.js's WebAssembly backend, see "SiMS in
        |WebAssembly" below), and in the same page planck 1.5.0, matter-js 0.20.0 and Rapier (`@dimforge/rapier2d-compat`
        |0.21.0, Rust compiled to WebAssembly), each from npm, each building the scene from the same
-       |layout values. Every engine runs $warmUp steps before $timed timed steps, the engines of a scene
+       |layout values. Every engine first steps a copy of the scene for $codeWarmUp ms, thrown away, so
+       |that the browser has compiled its code to its fastest (as the JVM bench's warm-up does), then
+       |builds the scene again and runs $warmUp steps before $timed timed steps, the engines of a scene
        |taking turns of 10 steps (the order rotating from turn to turn, so that a change in the
        |machine's load falls on all of them alike) and each one's time the median of its turns; planck and
        |matter-js with 10 velocity and 10 position iterations as in the JVM bench, Rapier with its

@@ -15,7 +15,7 @@ class BrowserBenchSpec extends AnyFunSuite:
   private val report = BrowserBench.markdown(
     rows(soft = 1.0, planck = 4.0, matter = 2.0, rapier = 0.8, "ballpit-500") ++
       rows(soft = 2.0, planck = 3.0, matter = 1.0, rapier = 1.0, "chain-100"),
-    "100", "200", "a browser", clockStep = 0.005)
+    "1000", "100", "200", "a browser", clockStep = 0.005)
 
   test("the ratios are SoftStep's time over each peer's, per scene") {
     assert(report.contains("| scene | SiMS SoftStep / planck | SiMS SoftStep / matter-js | SiMS SoftStep / Rapier |"))
@@ -32,13 +32,18 @@ class BrowserBenchSpec extends AnyFunSuite:
     val both = BrowserBench.markdown(
       rows(soft = 1.0, planck = 4.0, matter = 2.0, rapier = 0.8, "ballpit-500") :+
         Row("ballpit-500", "SiMS SoftStep Wasm", 0.6, ok = true, "0 outside"),
-      "100", "200", "a browser", clockStep = 0.005)
+      "1000", "100", "200", "a browser", clockStep = 0.005)
     assert(both.contains("| scene | SiMS SoftStep / planck | SiMS SoftStep / matter-js | SiMS SoftStep / Rapier | " +
         "SiMS SoftStep Wasm / planck | SiMS SoftStep Wasm / matter-js | SiMS SoftStep Wasm / Rapier |"))
     assert(both.contains("| ballpit-500 | 0.25 | 0.50 | 1.25 | 0.15 | 0.30 | 0.75 |"))
     assert(both.contains("In this run SiMS SoftStep is faster than planck on every scene; faster than matter-js on " +
         "every scene; within 1.5 times Rapier on every scene. SiMS SoftStep Wasm is faster than planck on every scene; " +
         "faster than matter-js on every scene; within 1.5 times Rapier on every scene."))
+  }
+
+  test("the report says how long each engine's code is warmed up, and how many steps are timed") {
+    assert(report.contains("steps a copy of the scene for 1000 ms, thrown away"))
+    assert(report.contains("runs 100 steps before 200 timed steps"))
   }
 
   test("the report says how fine the page's clock reads") {
