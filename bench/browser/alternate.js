@@ -6,30 +6,44 @@
 // loaded first may run a few per cent faster whatever its code: run both orders, and take
 // r = sqrt(ratio1 / ratio2).
 //
-//   node bench/browser/alternate.js <scene> <ClassicStep|SoftStep> <seconds> <bundle> <bundle> [...]
+//   node bench/browser/alternate.js <scene> <ClassicStep|SoftStep> <seconds> [--fresh] <bundle> <bundle> [...]
+//
+// With --fresh, the builds' worlds are made anew every round and timed over the steps the bench
+// page times (its 100 warm-up steps, then 200 in turns of 10): a swinging chain, say, rather
+// than one come to rest.
 //
 // A bundle is the `main.js` that `./sbt benchPage/fullLinkJS` writes (target/scala-*/sims-bench-page-opt).
 const path = require("path");
 
-const [scene, solver, seconds, ...bundles] = process.argv.slice(2);
+const [scene, solver, seconds, ...rest] = process.argv.slice(2);
+const fresh = rest[0] === "--fresh";
+const bundles = fresh ? rest.slice(1) : rest;
 if (!scene || !solver || !(Number(seconds) > 0) || bundles.length < 2) {
-  console.error("usage: node alternate.js <scene> <ClassicStep|SoftStep> <seconds> <bundle> <bundle> [...]");
+  console.error("usage: node alternate.js <scene> <ClassicStep|SoftStep> <seconds> [--fresh] <bundle> <bundle> [...]");
   process.exit(2);
 }
 const WarmUpSteps = 100;
-const TurnSteps = 5;
+const TurnSteps = fresh ? 10 : 5;
+const RoundTurns = 20; // with --fresh: 200 timed steps a round, as the bench page times
 
 // Each bundle sets globalThis.simsBench when loaded; the worlds keep their own bundle's code.
-const worlds = bundles.map((bundle) => {
+const makers = bundles.map((bundle) => {
   delete globalThis.simsBench;
   require(path.resolve(bundle));
-  return globalThis.simsBench.world(scene, solver);
+  const bench = globalThis.simsBench;
+  return () => bench.world(scene, solver);
 });
-for (const world of worlds) for (let i = 0; i < WarmUpSteps; i++) world.step();
+const warmedUp = () => {
+  const made = makers.map((make) => make());
+  for (const world of made) for (let i = 0; i < WarmUpSteps; i++) world.step();
+  return made;
+};
+let worlds = warmedUp();
 
 const times = worlds.map(() => []);
 const end = Date.now() + 1000 * Number(seconds);
 for (let turn = 0; Date.now() < end; turn++) {
+  if (fresh && turn > 0 && turn % RoundTurns === 0) worlds = warmedUp();
   const order = worlds.map((_, i) => (turn % 2 === 0 ? i : worlds.length - 1 - i));
   for (const i of order) {
     const start = process.hrtime.bigint();
