@@ -271,8 +271,9 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
         val turn = h * w
         state(k + Turn) += turn
         val turn2 = turn * turn
-        val cosTurn = 1 - turn2 * (0.5 - turn2 / 24)
-        val sinTurn = turn * (1 - turn2 * (1.0 / 6 - turn2 / 120))
+        // The series' coefficients multiply: a division by a constant stays a division.
+        val cosTurn = 1 - turn2 * (0.5 - turn2 * SoftPasses.OneOver24)
+        val sinTurn = turn * (1 - turn2 * (SoftPasses.Sixth - turn2 * SoftPasses.OneOver120))
         val c = state(k + TurnCos); val s = state(k + TurnSin)
         val turnedC = c * cosTurn - s * sinTurn
         val turnedS = s * cosTurn + c * sinTurn
@@ -297,6 +298,10 @@ private[sims] object SoftPasses:
   inline val MinimumShared = 2048
   /** How far from 1 a turned pair's squared length may be for one Newton step to make it 1 to rounding. */
   inline val NewtonRange = 1e-8
+  /** The turn's series' coefficients: 1/6, 1/24 and 1/120. */
+  private inline val Sixth = 1.0 / 6
+  private inline val OneOver24 = 1.0 / 24
+  private inline val OneOver120 = 1.0 / 120
   /** Ranges per worker in a shared stage: a worker that starts late finds work left. */
   inline val RangesPerWorker = 4
   /** Items of the contact events' settling judged together (see `settleEvents`): a cache line of verdicts. */
