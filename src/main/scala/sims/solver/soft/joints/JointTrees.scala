@@ -73,6 +73,7 @@ private[sims] final class JointTrees:
   private var jacobians = new Array[Double](0)
   private var positionError = new Array[Double](0)
   private var impulses = new Array[Array[Double]](0)
+  private var slotJoint = new Array[JointConstraint](0) // a joint slot's constraint (null for a body)
   private var accumulated = new Array[Double](0)
   // Per slot (see `eliminate`): D, symmetric, its upper triangle at 6 s; the factor kept for the
   // substitution (k x 3, at 6 s); the right side z, w = D^-1 z and the solution x, at 3 s; per
@@ -270,6 +271,7 @@ private[sims] final class JointTrees:
       plan = new Array[Int](Plan.Stride * room)
       jacobians = new Array[Double](12 * room); positionError = new Array[Double](2 * room)
       impulses = new Array[Array[Double]](room)
+      slotJoint = new Array[JointConstraint](room)
       accumulated = new Array[Double](2 * room)
       d = new Array[Double](6 * room); factor = new Array[Double](6 * room)
       z = new Array[Double](3 * room); w = new Array[Double](3 * room); x = new Array[Double](3 * room)
@@ -352,6 +354,7 @@ private[sims] final class JointTrees:
     liveStart(treeCount) = count
     liveCount = count
     java.util.Arrays.fill(impulses.asInstanceOf[Array[AnyRef]], 0, impulses.length, null) // no joint that left
+    java.util.Arrays.fill(slotJoint.asInstanceOf[Array[AnyRef]], 0, slotJoint.length, null)
     var node = 0
     while node < nodeCount do
       val slot = nodeSlot(node)
@@ -371,6 +374,7 @@ private[sims] final class JointTrees:
           plan(o + Plan.State1) = index1(ref) * SoftBodies.Stride
           plan(o + Plan.State2) = index2(ref) * SoftBodies.Stride
           impulses(slot) = direct(ref).impulse
+          slotJoint(slot) = direct(ref)
         else
           val parent = nodeParent(node)
           plan(o + Plan.Above) = if parent >= 0 then nodeSlot(parent) else -1
@@ -630,7 +634,7 @@ private[sims] final class JointTrees:
             val o = Plan.Stride * slot
             if plan(o + Plan.Size) < 3 then
               rows.target(jacobians, 12 * slot, positionError, 2 * slot)
-              direct(plan(o + Plan.Ref)).rowsAt(context, rows)
+              slotJoint(slot).rowsAt(context, rows)
             slot += 1
           // A tree the warm start left alone starts the substep's solve pass from 0.
           val fresh = useBias && !treeTouched(tree)
