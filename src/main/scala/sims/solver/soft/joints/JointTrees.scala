@@ -575,10 +575,12 @@ private[sims] final class JointTrees:
     while tree < treeCount do
       if treeTouched(tree) then
         storeImpulses(liveStart(tree), liveStart(tree + 1))
-        var node = treeStart(tree)
-        while node < treeStart(tree + 1) do
-          if nodeIsJoint(node) then direct(nodeRef(node)).warmStart(context)
-          node += 1
+        // Every joint is a slot (only bodies are folded), in node order.
+        var slot = liveStart(tree)
+        while slot < liveStart(tree + 1) do
+          val joint = slotJoint(slot)
+          if joint != null then joint.warmStart(context)
+          slot += 1
       tree += 1
 
   /** Gives each joint of the trees its rows' accumulated impulses from the passes (for its
