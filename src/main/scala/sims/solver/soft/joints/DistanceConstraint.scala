@@ -40,12 +40,15 @@ private[sims] final class DistanceConstraint(distanceJoint: DistanceJoint) exten
   /** The current arms, axis u and length |x| from the bodies' motion since the step began. */
   private def measure(bodies: SoftBodies): Unit =
     ends.measure(bodies.state)
-    val dx = ends.centresX + ends.arm2X - ends.arm1X
-    val dy = ends.centresY + ends.arm2Y - ends.arm1Y
-    length = math.sqrt(dx * dx + dy * dy)
+    length = aim(ends.centresX + ends.arm2X - ends.arm1X, ends.centresY + ends.arm2Y - ends.arm1Y)
+
+  /** Sets the axis along (dx, dy), kept as it was where the ends meet; returns the length. */
+  private inline def aim(dx: Double, dy: Double): Double =
+    val length = math.sqrt(dx * dx + dy * dy)
     if length > 0 then
       axisX = dx / length
       axisY = dy / length
+    length
 
   override def directRows: Int = 1
 
@@ -56,16 +59,9 @@ private[sims] final class DistanceConstraint(distanceJoint: DistanceJoint) exten
     val state = context.bodies.state
     val s1 = ends.index1 * Stride
     val s2 = ends.index2 * Stride
-    val arm1X = state(s1 + TurnCos) * ends.startArm1X - state(s1 + TurnSin) * ends.startArm1Y
-    val arm1Y = state(s1 + TurnSin) * ends.startArm1X + state(s1 + TurnCos) * ends.startArm1Y
-    val arm2X = state(s2 + TurnCos) * ends.startArm2X - state(s2 + TurnSin) * ends.startArm2Y
-    val arm2Y = state(s2 + TurnSin) * ends.startArm2X + state(s2 + TurnCos) * ends.startArm2Y
-    val dx = ends.startCentresX + state(s2 + ShiftX) - state(s1 + ShiftX) + arm2X - arm1X
-    val dy = ends.startCentresY + state(s2 + ShiftY) - state(s1 + ShiftY) + arm2Y - arm1Y
-    val length = math.sqrt(dx * dx + dy * dy)
-    if length > 0 then
-      axisX = dx / length
-      axisY = dy / length
+    val arm1X = ends.turnedArm1X(state, s1); val arm1Y = ends.turnedArm1Y(state, s1)
+    val arm2X = ends.turnedArm2X(state, s2); val arm2Y = ends.turnedArm2Y(state, s2)
+    val length = aim(ends.currentCentresX(state, s1, s2) + arm2X - arm1X, ends.currentCentresY(state, s1, s2) + arm2Y - arm1Y)
     val ux = axisX
     val uy = axisY
     rows.count = 1
