@@ -1,6 +1,6 @@
 package sims.collision
 
-import sims.collision.broadphase.UniformGrid
+import sims.collision.broadphase.{KeptPairs, UniformGrid}
 import sims.collision.narrowphase.Narrowphase
 import sims.dynamics.Shape
 
@@ -33,6 +33,26 @@ private[sims] final class CollisionPipeline:
       sweep: Double, inGridOrder: Boolean): Unit =
     takeBounds(shapes, gridSide, maxPairs, limitName, margin, sweep)
     broadphase.findPairs(pairs, inGridOrder)
+
+  /** The soft step's pairs kept from step to step (see [[KeptPairs]]). */
+  val kept: KeptPairs = KeptPairs()
+
+  /** `findPairs` in the grid's own order through the kept pairs of a world at `revision`: the
+    * grid searches only when they no longer hold (see [[KeptPairs]]); the kept pairs may number
+    * up to twice `maxPairs`.
+    */
+  def findKeptPairs(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
+      sweep: Double, revision: Long): Unit =
+    takeSettings(gridSide, maxPairs, limitName)
+    broadphase.beginUpdate(shapes, margin, sweep, everyShape = false)
+    broadphase.boundsOf(0, shapes.length)
+    if !kept.update(broadphase, revision, KeptPairs.limitFor(maxPairs), limitName) then
+      try
+        broadphase.endUpdate()
+        broadphase.findPairs(kept.buffer, inGridOrder = false)
+        kept.searchDone(broadphase)
+      finally kept.endSearch(broadphase)
+    kept.emit(broadphase, pairs)
 
   /** `findPairs` in the grid's own order, shared among threads: takes the settings as
     * `findPairs` does and starts the broadphase's update (see [[UniformGrid.beginUpdate]]); the

@@ -36,6 +36,10 @@ private[sims] final class PairBuffer:
   def first(i: Int): Shape = shapes(firsts(i))
   /** The second shape of pair i. */
   def second(i: Int): Shape = shapes(seconds(i))
+  /** The index of pair i's first shape in the array of the last `clear`. */
+  def firstIndex(i: Int): Int = firsts(i)
+  /** The index of pair i's second shape in the array of the last `clear`. */
+  def secondIndex(i: Int): Int = seconds(i)
   /** Forgets the pairs (the slots stay for reuse). */
   def clear(): Unit =
     count = 0
@@ -75,6 +79,23 @@ private[sims] final class PairBuffer:
     System.arraycopy(other.firsts, 0, firsts, count, other.count)
     System.arraycopy(other.seconds, 0, seconds, count, other.count)
     count += other.count
+    filled = false
+
+  /** Removes every pair with a shape whose index is marked in `marks`; the others keep their
+    * order.
+    */
+  def removeMarked(marks: Array[Boolean]): Unit =
+    var kept = 0
+    var i = 0
+    while i < count do
+      val a = firsts(i)
+      val b = seconds(i)
+      if !marks(a) && !marks(b) then
+        firsts(kept) = a
+        seconds(kept) = b
+        kept += 1
+      i += 1
+    count = kept
     filled = false
 
   private def tooMany(): IllegalStateException =

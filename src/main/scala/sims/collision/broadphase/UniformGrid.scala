@@ -39,7 +39,7 @@ private[sims] final class UniformGrid extends Broadphase:
   // The bounds are four doubles a shape in one array, min x, min y, max x, max y, and the fine
   // cells four Ints a shape, x0, y0, x1, y1: the pair search reads a partner's together, one
   // cache line or two where four arrays took four.
-  private var boxes = new Array[Double](0)
+  private[broadphase] var boxes = new Array[Double](0)
   private var placement = new Array[Byte](0)
   // Per shape, from the last update: its body, and whether the filter's answer for it follows
   // from that alone (see `filterKind`): a pair of two such shapes is judged from these arrays,
@@ -64,6 +64,12 @@ private[sims] final class UniformGrid extends Broadphase:
   // lands in one cell: quadratic). Pair order does not depend on the fine grid.
   private var originX, originY = 0.0
   private var gridBuilt = false
+  // While `KeptPairs` searches its pairs: a pair with a shape whose filter is not plain is kept
+  // whatever the filter says now (it is asked again each step, and its settings may change).
+  private[broadphase] var keeping = false
+  // Where the large shapes' pairs began in the last `findPairs` or `endShared` (the pairs before
+  // them come shape by shape: grouped by their second shape, in index order).
+  private[broadphase] var largeFrom = 0
   // Partners of the shape being placed: their order keys, and its coarse cells.
   private var groupKeys = new Array[Long](16)
   private var groupSize = 0
@@ -294,6 +300,7 @@ private[sims] final class UniformGrid extends Broadphase:
   // come from the fine cells under the large shape's bounds when there are fewer such cells than
   // shapes (a floor under a row of boxes), else from all shapes; the same partners either way.
   private def largePairs(pairs: PairBuffer): Unit =
+    largeFrom = pairs.size
     var k = 0
     while k < large.length do
       val big = large(k)
@@ -617,8 +624,78 @@ private[sims] final class UniformGrid extends Broadphase:
     overlapAccepted(j, i)
 
   private def overlapAccepted(j: Int, i: Int): Boolean =
+    overlap(j, i) && (if keeping then keepable(j, i) else accepts(j, i))
+
+  /** Whether the bounds of shapes j and i overlap. */
+  private[broadphase] def overlap(j: Int, i: Int): Boolean =
     sims.geometry.AABB.overlaps(boxMinX(j), boxMinY(j), boxMaxX(j), boxMaxY(j),
-      boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i)) && accepts(j, i)
+      boxMinX(i), boxMinY(i), boxMaxX(i), boxMaxY(i))
+
+  /** Whether `KeptPairs` keeps the pair of shapes j and i: the filter's answer for two plain
+    * shapes (it holds while their kinds do), and shapes of different bodies otherwise.
+    */
+  private def keepable(j: Int, i: Int): Boolean =
+    if filterKind(j) != General && filterKind(i) != General then accepts(j, i) else owner(j) ne owner(i)
+
+  /** Whether the filter accepts the kept pair of shapes j and i now (see `keepable`). */
+  private[broadphase] def acceptsKept(j: Int, i: Int): Boolean =
+    (filterKind(j) != General && filterKind(i) != General) || PairFilter.accepts(shapes(j), shapes(i))
+
+  /** Whether shape i is left out of this update (not collidable, or a sensor). */
+  private[broadphase] def ignored(i: Int): Boolean = placement(i) == Ignored
+
+  /** Shape i's kind for the filter in this update (see `kindOf`). */
+  private[broadphase] def kind(i: Int): Byte = filterKind(i)
+
+  /** Shape i's body, from this update. */
+  private[broadphase] def body(i: Int): Body = owner(i)
+
+  /** The shapes of the last update. */
+  private[broadphase] def shapeArray: Array[Shape] = shapes
+
+  /** Builds the fine grid from this update's bounds, after `endUpdate` (for `partnersOf`). */
+  private[broadphase] def fillFineGrid(): Unit = buildGrid()
+
+  /** Adds to `out` the candidate pairs of shape e with every other shape of this update, the
+    * earlier shape first, but for the shapes marked in `marks` before e (whose own call finds
+    * those pairs); needs the fine grid (`fillFineGrid`).
+    */
+  private[broadphase] def partnersOf(e: Int, marks: Array[Boolean], out: PairBuffer): Unit =
+    val p = placement(e)
+    if p == Fine then
+      val x0 = fineX0(e); val y0 = fineY0(e)
+      forEachFineCell(e) { (cx, cy) =>
+        var entry = grid.firstEntry(cx, cy)
+        while entry >= 0 do
+          val j = grid.shapeOf(entry)
+          // Each pair once: in the fine cell holding the corner of the bounds' overlap.
+          if j != e && !(j < e && marks(j)) && math.max(fineX0(j), x0) == cx && math.max(fineY0(j), y0) == cy then
+            partnerOf(e, j, out)
+          entry = grid.nextEntry(entry)
+      }
+      var k = 0
+      while k < wide.length do
+        val j = wide(k)
+        if !(j < e && marks(j)) then partnerOf(e, j, out)
+        k += 1
+      k = 0
+      while k < large.length do
+        val j = large(k)
+        if !(j < e && marks(j)) then partnerOf(e, j, out)
+        k += 1
+    else if p != Ignored then
+      var j = 0
+      while j < count do
+        if j != e && placement(j) != Ignored && !(j < e && marks(j)) then partnerOf(e, j, out)
+        j += 1
+
+  private def partnerOf(e: Int, j: Int, out: PairBuffer): Unit =
+    pairTests += 1
+    if overlapAccepted(j, e) then
+      if j < e then out.add(j, e) else out.add(e, j)
+
+  /** Marks the fine grid as not built from this update's bounds (the pairs came from elsewhere). */
+  private[broadphase] def gridUnused(): Unit = gridBuilt = false
 
   /** [[PairFilter.accepts]] for shapes j and i: for two plain shapes, different bodies not both
     * immovable, which is what the filter's rules come to for them.

@@ -1,6 +1,7 @@
 package sims.solver.soft
 
 import sims.collision.{GridDetector, PairBuffer, PairKey}
+import sims.collision.broadphase.KeptPairs
 import sims.dynamics.World
 import sims.solver.Workers
 
@@ -99,8 +100,8 @@ private[sims] final class ContactFinder:
         if workers.count > 1 && world.shapeBuffer.length >= SoftPasses.MinimumShared then
           findPairsShared(workers, world, gridSide, maxPairs, speculativeDistance)
         else
-          stages.findPairs(world.shapeBuffer, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance,
-            world.timeStep, inGridOrder = false)
+          stages.findKeptPairs(world.shapeBuffer, gridSide, maxPairs, "SoftStep.maxPairs", speculativeDistance,
+            world.timeStep, world.revision)
         val pairs = stages.pairs
         val narrowphase = stages.narrowphase
         narrowphase.update(detector.detectionMethods, detector.collisionMethods)
@@ -176,9 +177,9 @@ private[sims] final class ContactFinder:
           i += 1
     if !bodies.anyAsleep || !world.detector.isInstanceOf[GridDetector] then table.current.active = table.current.count
 
-  /** The broadphase's pairs in ranges of shapes shared out among `workers` (see
-    * [[sims.collision.broadphase.UniformGrid.beginSharedGrid]]): the same pairs, in the same order,
-    * as on one thread.
+  /** The broadphase's pairs, its bounds and any search for kept pairs in ranges of shapes shared
+    * out among `workers` (see [[sims.collision.broadphase.UniformGrid.beginSharedGrid]]): the same
+    * pairs, in the same order, as on one thread.
     */
   private def findPairsShared(workers: Workers, world: World, gridSide: Double, maxPairs: Int,
       speculativeDistance: Double): Unit =
@@ -189,39 +190,55 @@ private[sims] final class ContactFinder:
     grid = stages.broadphase
     ranges = count
     items = shapes.length
+    try workers.run(count, boundsTask)
+    finally grid = null
+    val kept = stages.kept
+    val broadphase = stages.broadphase
+    if !kept.update(broadphase, world.revision, KeptPairs.limitFor(maxPairs), "SoftStep.maxPairs") then
+      try
+        searchShared(workers, broadphase, kept.buffer)
+        kept.searchDone(broadphase)
+      finally kept.endSearch(broadphase)
+    kept.emit(broadphase, stages.pairs)
+
+  /** The grid's search for the kept pairs (see [[KeptPairs.beginSearch]]), into `buffer`,
+    * shared out among `workers`.
+    */
+  private def searchShared(workers: Workers, grid: sims.collision.broadphase.UniformGrid, buffer: PairBuffer): Unit =
+    this.grid = grid
     try
-      workers.run(count, boundsTask)
       // The fine cells and the fine grid in a range of shapes per worker (each shape's share of
       // the work is about the same), the grid's chains then joined in ranges of cells.
       ranges = math.min(workers.count, ContactFinder.MostGridRanges)
       grid.beginFineCells(ranges)
       workers.run(ranges, fineCellsTask)
       grid.endFineCells()
-      if grid.beginSharedGrid(stages.pairs) then
+      if grid.beginSharedGrid(buffer) then
         workers.run(ranges, buildTask)
         items = grid.gridCells
         workers.run(ranges, linkTask)
         grid.endSharedGrid()
-    finally grid = null
+    finally this.grid = null
+    val count = ContactFinder.RangesPerWorker * workers.count
     if pairRanges.length < count then
       pairRanges = Array.fill(count)(PairBuffer())
       pairTests = new Array[Long](count)
     var r = 0
     while r < count do
-      pairRanges(r).limit = maxPairs
+      pairRanges(r).limit = buffer.limit
       pairRanges(r).limitName = "SoftStep.maxPairs"
       r += 1
-    grid = stages.broadphase
+    this.grid = grid
     ranges = count
     items = grid.shapeCount
     try workers.run(count, pairsTask)
-    finally grid = null
+    finally this.grid = null
     var tests = 0L
     r = 0
     while r < count do
       tests += pairTests(r)
       r += 1
-    stages.broadphase.endShared(stages.pairs, pairRanges, count, tests)
+    grid.endShared(buffer, pairRanges, count, tests)
 
   /** Collides `pairs` in ranges shared out among `workers`, into `table.current` in the ranges'
     * order; false, with nothing added, when a range met a pair of a user's kinds. A failure (a
