@@ -81,23 +81,6 @@ private[sims] final class PairBuffer:
     count += other.count
     filled = false
 
-  /** Removes every pair with a shape whose index is marked in `marks`; the others keep their
-    * order.
-    */
-  def removeMarked(marks: Array[Boolean]): Unit =
-    var kept = 0
-    var i = 0
-    while i < count do
-      val a = firsts(i)
-      val b = seconds(i)
-      if !marks(a) && !marks(b) then
-        firsts(kept) = a
-        seconds(kept) = b
-        kept += 1
-      i += 1
-    count = kept
-    filled = false
-
   private def tooMany(): IllegalStateException =
     IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
       s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
