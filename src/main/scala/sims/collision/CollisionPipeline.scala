@@ -37,21 +37,27 @@ private[sims] final class CollisionPipeline:
   /** The soft step's pairs kept from step to step (see [[KeptPairs]]). */
   val kept: KeptPairs = KeptPairs()
 
-  /** `findPairs` in the grid's own order through the kept pairs of a world at `revision`: the
-    * grid searches only when they no longer hold (see [[KeptPairs]]); the kept pairs may number
-    * up to twice `maxPairs`.
+  /** `findPairs` through the kept pairs of a world at `revision`, in their order: the grid
+    * searches only when they no longer hold (see [[KeptPairs]]); the kept pairs may number up to
+    * twice `maxPairs`.
     */
   def findKeptPairs(shapes: Array[Shape], gridSide: Double, maxPairs: Int, limitName: String, margin: Double,
       sweep: Double, revision: Long): Unit =
     takeSettings(gridSide, maxPairs, limitName)
     broadphase.beginUpdate(shapes, margin, sweep, everyShape = false)
     broadphase.boundsOf(0, shapes.length)
-    if !kept.update(broadphase, revision, KeptPairs.limitFor(maxPairs), limitName) then
+    val kept = this.kept
+    val found =
       try
-        broadphase.endUpdate()
-        broadphase.findPairs(kept.buffer, inGridOrder = false)
-        kept.searchDone(broadphase)
+        kept.update(broadphase, revision, KeptPairs.limitFor(maxPairs), limitName) || {
+          broadphase.endUpdate()
+          broadphase.findPairs(kept.buffer, inGridOrder = false)
+          kept.searchDone(broadphase)
+          true
+        }
+      catch case _: PairBuffer.TooManyPairs => false
       finally kept.endSearch(broadphase)
+    if !found then kept.searchTight(broadphase, maxPairs, limitName)
     kept.emit(broadphase, pairs)
 
   /** `findPairs` in the grid's own order, shared among threads: takes the settings as

@@ -81,10 +81,15 @@ private[sims] final class PairBuffer:
     count += other.count
     filled = false
 
+  /** Whether passing `limit` throws [[PairBuffer.TooManyPairs]] (a buffer of kept pairs, whose
+    * owner catches it) rather than the step's IllegalStateException.
+    */
+  var keeps: Boolean = false
+
   private def tooMany(): IllegalStateException =
-    IllegalStateException(s"more than $limit candidate pairs in one step (the limit " +
-      s"$limitName): are many shapes piled at one place? Raise maxPairs if the scene really " +
-      "has that many overlapping bounds")
+    val message = s"more than $limit candidate pairs in one step (the limit $limitName): are many shapes " +
+      "piled at one place? Raise maxPairs if the scene really has that many overlapping bounds"
+    if keeps then PairBuffer.TooManyPairs(message) else IllegalStateException(message)
 
   /** Gives every pair its slot, made if there is none yet, with the pair's shapes in it. */
   def fillSlots(): Unit =
@@ -100,3 +105,7 @@ private[sims] final class PairBuffer:
       s.second = shapes(seconds(i))
       i += 1
     filled = true
+
+private[sims] object PairBuffer:
+  /** The failure of a buffer that would hold more than its `limit` of pairs. */
+  final class TooManyPairs(message: String) extends IllegalStateException(message)

@@ -56,7 +56,8 @@ import sims.solver.soft.SoftBodies.*
   * @param gridSide side of the broadphase's grid cells, m (the world's one broadphase, which the
   *   classic step uses with its detector's `gridSide`)
   * @param maxPairs the most candidate pairs a step may have; a step with more fails, changing
-  *   nothing, with an IllegalStateException naming this limit
+  *   nothing, with an IllegalStateException naming this limit (the pairs kept from step to step,
+  *   whose bounds are enlarged by a tenth, may number twice as many)
   * @param workers how many threads share a step's contacts and bodies (the caller and
   *   `workers - 1` others, kept in a pool; none is started for 1); the results are the same, to
   *   the bit, for any number (default: the available processors; 1 on Scala.js)

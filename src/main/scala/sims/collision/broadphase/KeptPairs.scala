@@ -13,12 +13,14 @@ import sims.dynamics.Shape
   * overlap. While a shape's bounds of the step lie within its enlarged ones, its pairs whose
   * bounds of the step overlap are all among the kept ones. A step's pairs are the kept pairs
   * whose bounds overlap now and that the filter accepts: the same pairs as the grid's. They come
-  * in one order whatever the history: by their second shape, then by their first (each by
-  * index), so that a step's result depends on the world's state alone.
+  * in one order whatever the history: by their second shape, then the later first shape first
+  * (by index), so that a step's result depends on the world's state alone.
   *
   * When shapes left their enlarged bounds, only their partners are searched (their pairs are
   * dropped and found again), unless more than one in [[KeptPairs.MostMovedShare]] did: then the
-  * grid searches for all pairs, shared out among the workers when there are several.
+  * grid searches for all pairs, shared out among the workers when there are several. A search
+  * that finds more than its limit of kept pairs gives way to the grid's search of the step's own
+  * bounds, which alone decides whether the step has too many pairs.
   *
   * The filter: a pair of two plain shapes (see `UniformGrid.kindOf`) is judged at the search, and
   * stays judged while both shapes keep their kinds (a shape whose kind changes is searched
@@ -43,6 +45,7 @@ private[sims] final class KeptPairs:
   // The grid's pairs of a full search, the moved shapes' partners, and sort keys for them.
   private val searched = PairBuffer()
   private val found = PairBuffer()
+  found.keeps = true
   private var sortKeys = new Array[Double](0)
   private var shapes: Array[Shape] = null
   private var count = 0
@@ -99,6 +102,7 @@ private[sims] final class KeptPairs:
       else
         fullSearches += 1
         unmark(moved)
+        searched.keeps = true
         searched.limit = limit
         searched.limitName = limitName
         false
@@ -136,6 +140,21 @@ private[sims] final class KeptPairs:
       size = split
       merge(n - split)
     valid = true
+
+  /** After a search that met more than its limit of kept pairs (see `update`, its pairs lost): the
+    * grid's pairs of this update's own bounds, at most `maxPairs` (past it the search fails,
+    * naming `limitName`), taken for this step only (the next searches in full).
+    */
+  def searchTight(grid: UniformGrid, maxPairs: Int, limitName: String): Unit =
+    endSearch(grid)
+    searched.keeps = false
+    searched.limit = maxPairs
+    searched.limitName = limitName
+    size = 0
+    grid.endUpdate()
+    grid.findPairs(searched, inGridOrder = false)
+    searchDone(grid)
+    valid = false
 
   /** Gives the grid its own bounds back after a search (done or failed). */
   def endSearch(grid: UniformGrid): Unit =
@@ -225,13 +244,13 @@ private[sims] final class KeptPairs:
     size = n
 
   /** Sorts pairs `from` until `until` of `pairs` in the kept order, in `sortKeys`: a Double holds
-    * second * 2^31 + first exactly, and sorts as the pair does.
+    * second * 2^31 + (2^31 - 1 - first) exactly, and sorts as the pair does.
     */
   private def sortRange(pairs: PairBuffer, from: Int, until: Int): Unit =
     if sortKeys.length < until - from then sortKeys = new Array[Double](math.max(until - from, 2 * sortKeys.length))
     var k = from
     while k < until do
-      sortKeys(k - from) = pairs.secondIndex(k) * KeptPairs.KeyScale + pairs.firstIndex(k)
+      sortKeys(k - from) = pairs.secondIndex(k) * KeptPairs.KeyScale + (KeptPairs.KeyScale - 1 - pairs.firstIndex(k))
       k += 1
     java.util.Arrays.sort(sortKeys, 0, until - from)
 
@@ -249,7 +268,7 @@ private[sims] final class KeptPairs:
         b == extra || a < size && {
           val key = sortKeys(b)
           val s = (key / KeptPairs.KeyScale).toInt
-          before(firsts(a), seconds(a), (key - s * KeptPairs.KeyScale).toInt, s)
+          before(firsts(a), seconds(a), KeptPairs.firstOf(key, s), s)
         }
       if takeKept then
         mergedFirsts(out) = firsts(a); mergedSeconds(out) = seconds(a)
@@ -257,7 +276,7 @@ private[sims] final class KeptPairs:
       else
         val key = sortKeys(b)
         val s = (key / KeptPairs.KeyScale).toInt
-        mergedFirsts(out) = (key - s * KeptPairs.KeyScale).toInt; mergedSeconds(out) = s
+        mergedFirsts(out) = KeptPairs.firstOf(key, s); mergedSeconds(out) = s
         b += 1
       out += 1
     val f = firsts; firsts = mergedFirsts; mergedFirsts = f
@@ -288,11 +307,16 @@ private[sims] object KeptPairs:
   /** When more than one shape in this many left its enlarged bounds, the grid searches in full. */
   val MostMovedShare = 4
 
-  /** 2^31: a pair's sort key is second * KeyScale + first. */
+  /** 2^31: a pair's sort key is second * KeyScale + (KeyScale - 1 - first). */
   private val KeyScale = 2147483648.0
 
-  /** Pair (f1, s1) comes before (f2, s2) in the kept order: by second shape, then first. */
-  private inline def before(f1: Int, s1: Int, f2: Int, s2: Int): Boolean = s1 < s2 || s1 == s2 && f1 < f2
+  /** The first shape of the pair of sort key `key` whose second shape is `second`. */
+  private inline def firstOf(key: Double, second: Int): Int = (KeyScale - 1 - (key - second * KeyScale)).toInt
+
+  /** Pair (f1, s1) comes before (f2, s2) in the kept order: by second shape, then the later first
+    * shape first (the order in which one cell of the grid lists a shape's partners).
+    */
+  private inline def before(f1: Int, s1: Int, f2: Int, s2: Int): Boolean = s1 < s2 || s1 == s2 && f1 > f2
 
   /** The most kept pairs for a step limited to `maxPairs`: twice as many (the enlarged bounds
     * overlap more often, and pairs the filter turns down are kept too).

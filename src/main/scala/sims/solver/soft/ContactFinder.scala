@@ -194,11 +194,16 @@ private[sims] final class ContactFinder:
     finally grid = null
     val kept = stages.kept
     val broadphase = stages.broadphase
-    if !kept.update(broadphase, world.revision, KeptPairs.limitFor(maxPairs), "SoftStep.maxPairs") then
+    val found =
       try
-        searchShared(workers, broadphase, kept.buffer)
-        kept.searchDone(broadphase)
+        kept.update(broadphase, world.revision, KeptPairs.limitFor(maxPairs), "SoftStep.maxPairs") || {
+          searchShared(workers, broadphase, kept.buffer)
+          kept.searchDone(broadphase)
+          true
+        }
+      catch case _: PairBuffer.TooManyPairs => false
       finally kept.endSearch(broadphase)
+    if !found then kept.searchTight(broadphase, maxPairs, "SoftStep.maxPairs")
     kept.emit(broadphase, stages.pairs)
 
   /** The grid's search for the kept pairs (see [[KeptPairs.beginSearch]]), into `buffer`,
@@ -226,6 +231,7 @@ private[sims] final class ContactFinder:
     var r = 0
     while r < count do
       pairRanges(r).limit = buffer.limit
+      pairRanges(r).keeps = true
       pairRanges(r).limitName = "SoftStep.maxPairs"
       r += 1
     this.grid = grid

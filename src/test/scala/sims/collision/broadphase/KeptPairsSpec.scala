@@ -14,7 +14,9 @@ import sims.solver.SoftStep
   */
 class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
 
-  /** Every collidable pair whose bounds overlap and that the filter accepts, by second shape, then first. */
+  /** Every collidable pair whose bounds overlap and that the filter accepts, by second shape,
+    * then the later first shape first.
+    */
   private def expected(world: World): Seq[(Int, Int)] =
     val shapes = world.shapeBuffer
     val pairs =
@@ -23,7 +25,7 @@ class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
         j <- 0 until i
         if shapes(j).AABB.overlaps(shapes(i).AABB) && PairFilter.accepts(shapes(j), shapes(i))
       yield (j, i)
-    pairs.sortBy((j, i) => (i, j))
+    pairs.sortBy((j, i) => (i, -j))
 
   /** The pipeline's pairs through the kept pairs, bounds not enlarged (as the brute force's). */
   private def keptPairs(world: World, side: Double = 2.0, maxPairs: Int = 1000000): Seq[(Int, Int)] =
@@ -113,15 +115,25 @@ class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
     (kept.searches, kept.fullSearches) shouldBe (4, 3)
   }
 
-  test("the kept pairs may not outgrow twice the limit of a step's pairs, and a step's pairs their limit") {
+  test("a step fails past its limit of pairs, naming it, however many pairs its enlarged bounds would keep") {
     val world = World()
     for _ <- 0 until 30 do world += Circle(1, 1).asBody
-    // 435 pairs, all at one place.
-    val tooMany = intercept[IllegalStateException](keptPairs(world, maxPairs = 200))
-    tooMany.getMessage should include("more than 400 candidate pairs")
-    val alsoTooMany = intercept[IllegalStateException](keptPairs(world, maxPairs = 300))
-    alsoTooMany.getMessage should include("more than 300 candidate pairs")
+    // 435 pairs, all at one place: past the kept pairs' limit (twice 200) and past 300.
+    intercept[IllegalStateException](keptPairs(world, maxPairs = 200)).getMessage should
+      include("more than 200 candidate pairs")
+    intercept[IllegalStateException](keptPairs(world, maxPairs = 300)).getMessage should
+      include("more than 300 candidate pairs")
     keptPairs(world, maxPairs = 435) shouldBe expected(world)
+    // A row of balls 10 cm apart: no pairs, but 9 of enlarged bounds, past twice the limit 4.
+    val row = World()
+    for i <- 0 until 10 do
+      val s = Circle(1, 1)
+      s.pos = Vector2D(2.1 * i, 0)
+      row += s.asBody
+    keptPairs(row, maxPairs = 4) shouldBe empty
+    keptPairs(row, maxPairs = 4) shouldBe empty
+    keptPairs(row, maxPairs = 5) shouldBe empty
+    row.collisionPipeline.kept.fullSearches shouldBe 3
   }
 
   test("soft-stepped stacks at rest find their pairs without a search") {
