@@ -12,7 +12,9 @@ import sims.dynamics.{Body, Shape, World}
   * meets one of them on the way ([[sims.collision.TimeOfImpact]]), the body is moved back to the
   * first such meeting, reaching [[Defaults.BulletDepth]] into the fixed shape, with its
   * velocities as they are: the next step's contact stops it there. A body fast enough to cross a
-  * thin wall between two steps thus never passes it.
+  * thin wall between two steps thus never passes it. Nor does its centre's path enter a fixed
+  * shape: a spinning body's corners can reach deeper than the time of impact sees, and a body
+  * whose centre got into the tip of a closed wedge was pushed out on its far side.
   *
   * Only free bullets are swept, only against fixed shapes (as Box2D's bullets against static
   * ones; two fast bodies can still pass each other), and only pairs that may collide
@@ -24,6 +26,7 @@ private[sims] final class ContinuousCollision:
   private var count = 0
   private val near = ArrayBuffer.empty[Shape]
   private val impact = TimeOfImpact()
+  private val centrePath = sims.geometry.RayMath.Hit()
 
   /** Number of bodies moved back by the last `sweep` (for tests and measurements). */
   var stopped: Int = 0
@@ -80,6 +83,9 @@ private[sims] final class ContinuousCollision:
           val other = near(n)
           if other.body.fixed && PairFilter.accepts(shape, other) then
             first = impact.fraction(body, x0, y0, angle0, dx, dy, dAngle, shape, other, Defaults.BulletDepth, first)
+            // The body's centre never crosses into the fixed shape, whatever its turn did (a
+            // spinning body's corners can reach deeper than its time of impact sees).
+            if other.castRay(x0, y0, dx, dy, first, centrePath) then first = centrePath.fraction
           n += 1
         s += 1
       if first < 1 then

@@ -13,8 +13,8 @@ import sims.dynamics.Shape
   * overlap. While a shape's bounds of the step lie within its enlarged ones, its pairs whose
   * bounds of the step overlap are all among the kept ones. A step's pairs are the kept pairs
   * whose bounds overlap now and that the filter accepts: the same pairs as the grid's. They come
-  * in one order whatever the history: by their second shape, then the later first shape first
-  * (by index), so that a step's result depends on the world's state alone.
+  * in one order whatever the history: by their second shape, then by their first (by index), so
+  * that a step's result depends on the world's state alone.
   *
   * When shapes left their enlarged bounds, only their partners are searched (their pairs are
   * dropped and found again), unless more than one in [[KeptPairs.MostMovedShare]] did: then the
@@ -244,13 +244,13 @@ private[sims] final class KeptPairs:
     size = n
 
   /** Sorts pairs `from` until `until` of `pairs` in the kept order, in `sortKeys`: a Double holds
-    * second * 2^31 + (2^31 - 1 - first) exactly, and sorts as the pair does.
+    * second * 2^31 + first exactly, and sorts as the pair does.
     */
   private def sortRange(pairs: PairBuffer, from: Int, until: Int): Unit =
     if sortKeys.length < until - from then sortKeys = new Array[Double](math.max(until - from, 2 * sortKeys.length))
     var k = from
     while k < until do
-      sortKeys(k - from) = pairs.secondIndex(k) * KeptPairs.KeyScale + (KeptPairs.KeyScale - 1 - pairs.firstIndex(k))
+      sortKeys(k - from) = pairs.secondIndex(k) * KeptPairs.KeyScale + pairs.firstIndex(k)
       k += 1
     java.util.Arrays.sort(sortKeys, 0, until - from)
 
@@ -307,16 +307,14 @@ private[sims] object KeptPairs:
   /** When more than one shape in this many left its enlarged bounds, the grid searches in full. */
   val MostMovedShare = 4
 
-  /** 2^31: a pair's sort key is second * KeyScale + (KeyScale - 1 - first). */
+  /** 2^31: a pair's sort key is second * KeyScale + first. */
   private val KeyScale = 2147483648.0
 
   /** The first shape of the pair of sort key `key` whose second shape is `second`. */
-  private inline def firstOf(key: Double, second: Int): Int = (KeyScale - 1 - (key - second * KeyScale)).toInt
+  private inline def firstOf(key: Double, second: Int): Int = (key - second * KeyScale).toInt
 
-  /** Pair (f1, s1) comes before (f2, s2) in the kept order: by second shape, then the later first
-    * shape first (the order in which one cell of the grid lists a shape's partners).
-    */
-  private inline def before(f1: Int, s1: Int, f2: Int, s2: Int): Boolean = s1 < s2 || s1 == s2 && f1 > f2
+  /** Pair (f1, s1) comes before (f2, s2) in the kept order: by second shape, then by first. */
+  private inline def before(f1: Int, s1: Int, f2: Int, s2: Int): Boolean = s1 < s2 || s1 == s2 && f1 < f2
 
   /** The most kept pairs for a step limited to `maxPairs`: twice as many (the enlarged bounds
     * overlap more often, and pairs the filter turns down are kept too).

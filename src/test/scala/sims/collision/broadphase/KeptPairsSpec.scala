@@ -14,9 +14,7 @@ import sims.solver.SoftStep
   */
 class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChecks:
 
-  /** Every collidable pair whose bounds overlap and that the filter accepts, by second shape,
-    * then the later first shape first.
-    */
+  /** Every collidable pair whose bounds overlap and that the filter accepts, by second shape, then first. */
   private def expected(world: World): Seq[(Int, Int)] =
     val shapes = world.shapeBuffer
     val pairs =
@@ -25,7 +23,7 @@ class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
         j <- 0 until i
         if shapes(j).AABB.overlaps(shapes(i).AABB) && PairFilter.accepts(shapes(j), shapes(i))
       yield (j, i)
-    pairs.sortBy((j, i) => (i, -j))
+    pairs.sortBy((j, i) => (i, j))
 
   /** The pipeline's pairs through the kept pairs, bounds not enlarged (as the brute force's). */
   private def keptPairs(world: World, side: Double = 2.0, maxPairs: Int = 1000000): Seq[(Int, Int)] =
