@@ -206,7 +206,7 @@ private[sims] final class ContactFinder:
     if !found then kept.searchTight(broadphase, maxPairs, "SoftStep.maxPairs")
     kept.emit(broadphase, stages.pairs)
 
-  /** The grid's search for the kept pairs (see [[KeptPairs.beginSearch]]), into `buffer`,
+  /** The grid's full search for the kept pairs (see [[KeptPairs.update]]), into `buffer`,
     * shared out among `workers`.
     */
   private def searchShared(workers: Workers, grid: sims.collision.broadphase.UniformGrid, buffer: PairBuffer): Unit =
