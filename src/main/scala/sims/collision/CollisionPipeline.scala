@@ -37,6 +37,11 @@ private[sims] final class CollisionPipeline:
   /** The soft step's pairs kept from step to step (see [[KeptPairs]]). */
   val kept: KeptPairs = KeptPairs()
 
+  // The kept pairs' full search on one thread.
+  private val serialSearch: KeptPairs.Search = (grid, buffer) =>
+    grid.endUpdate()
+    grid.findPairs(buffer, inGridOrder = false)
+
   /** `findPairs` through the kept pairs of a world at `revision`, in their order: the grid
     * searches only when they no longer hold (see [[KeptPairs]]); the kept pairs may number up to
     * twice `maxPairs`.
@@ -46,19 +51,7 @@ private[sims] final class CollisionPipeline:
     takeSettings(gridSide, maxPairs, limitName)
     broadphase.beginUpdate(shapes, margin, sweep, everyShape = false)
     broadphase.boundsOf(0, shapes.length)
-    val kept = this.kept
-    val found =
-      try
-        kept.update(broadphase, revision, KeptPairs.limitFor(maxPairs), limitName) || {
-          broadphase.endUpdate()
-          broadphase.findPairs(kept.buffer, inGridOrder = false)
-          kept.searchDone(broadphase)
-          true
-        }
-      catch case _: PairBuffer.TooManyPairs => false
-      finally kept.endSearch(broadphase)
-    if !found then kept.searchTight(broadphase, maxPairs, limitName)
-    kept.emit(broadphase, pairs)
+    kept.pairsOf(broadphase, revision, maxPairs, limitName, pairs, serialSearch)
 
   /** `findPairs` in the grid's own order, shared among threads: takes the settings as
     * `findPairs` does and starts the broadphase's update (see [[UniformGrid.beginUpdate]]); the

@@ -186,9 +186,7 @@ private[sims] final class KeptPairs:
       val b = 4 * i
       inside =
         if grid.ignored(i) then fat(b) != fat(b)
-        else
-          fat(b) <= boxes(b) && fat(b + 1) <= boxes(b + 1) && boxes(b + 2) <= fat(b + 2) &&
-          boxes(b + 3) <= fat(b + 3) && kinds(i) == grid.kind(i)
+        else withinFat(boxes, b) && kinds(i) == grid.kind(i)
       i += 1
     inside
 
@@ -205,9 +203,7 @@ private[sims] final class KeptPairs:
         if fat(b) == fat(b) then
           fat(b) = Double.NaN; fat(b + 1) = Double.NaN; fat(b + 2) = Double.NaN; fat(b + 3) = Double.NaN
           moved = mark(i, moved)
-      else if !(fat(b) <= boxes(b) && fat(b + 1) <= boxes(b + 1) && boxes(b + 2) <= fat(b + 2) &&
-          boxes(b + 3) <= fat(b + 3)) || kinds(i) != grid.kind(i)
-      then
+      else if !withinFat(boxes, b) || kinds(i) != grid.kind(i) then
         val margin =
           if grid.body(i).immovable then 0.0
           else KeptPairs.FatFraction * math.min(boxes(b + 2) - boxes(b), boxes(b + 3) - boxes(b + 1))
@@ -217,6 +213,29 @@ private[sims] final class KeptPairs:
         moved = mark(i, moved)
       i += 1
     moved
+
+  /** Whether the bounds at `b` in `boxes` lie within the enlarged ones at `b` (false for NaN). */
+  private inline def withinFat(boxes: Array[Double], b: Int): Boolean =
+    fat(b) <= boxes(b) && fat(b + 1) <= boxes(b + 1) && boxes(b + 2) <= fat(b + 2) && boxes(b + 3) <= fat(b + 3)
+
+  /** Makes `pairs` this step's pairs from the grid's update (its `boundsOf` done) in a world at
+    * `revision`, with at most `maxPairs` of them (past it the step fails, naming `limitName`):
+    * `update`, `search` into `buffer` when the grid must search in full, and the grid's search of
+    * the step's own bounds when the kept pairs would pass twice `maxPairs`; then `emit`.
+    */
+  def pairsOf(grid: UniformGrid, revision: Long, maxPairs: Int, limitName: String, pairs: PairBuffer,
+      search: KeptPairs.Search): Unit =
+    val found =
+      try
+        update(grid, revision, KeptPairs.limitFor(maxPairs), limitName) || {
+          search.run(grid, searched)
+          searchDone(grid)
+          true
+        }
+      catch case _: PairBuffer.TooManyPairs => false
+      finally endSearch(grid)
+    if !found then searchTight(grid, maxPairs, limitName)
+    emit(grid, pairs)
 
   private def mark(i: Int, moved: Int): Int =
     marks(i) = true
@@ -299,6 +318,13 @@ private[sims] final class KeptPairs:
     size = 0
 
 private[sims] object KeptPairs:
+  /** The grid's full search for the kept pairs: its `endUpdate` and pair search, serial or shared
+    * out, into `buffer` (see `pairsOf`).
+    */
+  trait Search:
+    /** Runs the search of `grid` into `buffer`. */
+    def run(grid: UniformGrid, buffer: PairBuffer): Unit
+
   /** A moving shape's bounds are held enlarged by this fraction of their smaller side: a resting
     * shape's jitter stays far within it, and a ball in a pile gains few kept partners.
     */

@@ -72,6 +72,10 @@ private[sims] final class ContactFinder:
   private var pairRanges = new Array[PairBuffer](0)
   private var pairTests = new Array[Long](0)
 
+  // The workers of the shared search under way, and the search as the kept pairs call it.
+  private var workers: Workers = null
+  private val sharedSearch: KeptPairs.Search = (grid, buffer) => searchShared(grid, buffer)
+
   private val pairsTask: Workers.Task = index =>
     pairTests(index) = grid.findPairsOf(from(index), from(index + 1), pairRanges(index))
 
@@ -192,24 +196,15 @@ private[sims] final class ContactFinder:
     items = shapes.length
     try workers.run(count, boundsTask)
     finally grid = null
-    val kept = stages.kept
-    val broadphase = stages.broadphase
-    val found =
-      try
-        kept.update(broadphase, world.revision, KeptPairs.limitFor(maxPairs), "SoftStep.maxPairs") || {
-          searchShared(workers, broadphase, kept.buffer)
-          kept.searchDone(broadphase)
-          true
-        }
-      catch case _: PairBuffer.TooManyPairs => false
-      finally kept.endSearch(broadphase)
-    if !found then kept.searchTight(broadphase, maxPairs, "SoftStep.maxPairs")
-    kept.emit(broadphase, stages.pairs)
+    this.workers = workers
+    try stages.kept.pairsOf(stages.broadphase, world.revision, maxPairs, "SoftStep.maxPairs", stages.pairs, sharedSearch)
+    finally this.workers = null
 
   /** The grid's full search for the kept pairs (see [[KeptPairs.update]]), into `buffer`,
     * shared out among `workers`.
     */
-  private def searchShared(workers: Workers, grid: sims.collision.broadphase.UniformGrid, buffer: PairBuffer): Unit =
+  private def searchShared(grid: sims.collision.broadphase.UniformGrid, buffer: PairBuffer): Unit =
+    val workers = this.workers
     this.grid = grid
     try
       // The fine cells and the fine grid in a range of shapes per worker (each shape's share of
