@@ -127,6 +127,35 @@ class SoftStepWorkersSpec extends AnyFunSuite with Matchers:
     failure(2).getMessage shouldBe one.getMessage
   }
 
+  test("more pairs than maxPairs, fewer kept than twice that: under 2 workers the same pairs, or the same error, as under one") {
+    // 2,500 balls in a square, each bounds overlapping its 8 neighbours': the kept pairs are
+    // emitted in ranges under two workers.
+    def world(workers: Int, maxPairs: Int): World =
+      val w = World()
+      w.enableSleep = false
+      w.gravity = Vector2D(0, 0)
+      w.solver = SoftStep(workers = workers, maxPairs = maxPairs)
+      for i <- 0 until 2500 do
+        val ball = Circle(0.5, 1)
+        ball.pos = Vector2D(0.99 * (i % 50), 0.99 * (i / 50))
+        w += ball.asBody
+      w
+    def pairs(w: World): Seq[(Int, Int)] =
+      val found = w.collisionPipeline.pairs
+      (0 until found.size).map(k => (found.first(k).worldIndex, found.second(k).worldIndex))
+    val one = world(1, 100000)
+    one.step()
+    val two = world(2, 100000)
+    two.step()
+    val count = pairs(one).size
+    count should be > 2 * 2048
+    pairs(two) shouldBe pairs(one)
+    StateFingerprint(two) shouldBe StateFingerprint(one)
+    def failure(workers: Int) = intercept[IllegalStateException](world(workers, count - 1).step()).getMessage
+    failure(1) should include(s"more than ${count - 1} candidate pairs in one step (the limit SoftStep.maxPairs)")
+    failure(2) shouldBe failure(1)
+  }
+
   test("workers must be at least 1, named in the error") {
     val error = intercept[IllegalArgumentException](SoftStep(workers = 0))
     error.getMessage should include("workers")

@@ -168,13 +168,28 @@ private[sims] final class KeptPairs:
     * built for this update (a query builds its own).
     */
   def emit(grid: UniformGrid, pairs: PairBuffer): Unit =
-    pairs.clear(shapes)
-    var k = 0
-    while k < size do
+    emitRange(grid, 0, size, pairs)
+    endEmit(grid)
+
+  /** How many pairs are kept: `emit` looks at each. */
+  def keptCount: Int = size
+
+  /** `emit`'s work for the kept pairs `from` until `until` (in the kept order): makes `out` those
+    * whose bounds overlap and that the filter accepts. Several threads may run it at once, for
+    * ranges of their own into buffers of their own: appended in the ranges' order, the buffers
+    * hold `emit`'s pairs. Then `endEmit`.
+    */
+  def emitRange(grid: UniformGrid, from: Int, until: Int, out: PairBuffer): Unit =
+    out.clear(shapes)
+    var k = from
+    while k < until do
       val j = firsts(k)
       val i = seconds(k)
-      if grid.overlap(j, i) && grid.acceptsKept(j, i) then pairs.add(j, i)
+      if grid.overlap(j, i) && grid.acceptsKept(j, i) then out.add(j, i)
       k += 1
+
+  /** Ends an emission of the kept pairs (see `emitRange`). */
+  def endEmit(grid: UniformGrid): Unit =
     grid.pairTests += size
     grid.gridUnused()
 
@@ -221,7 +236,8 @@ private[sims] final class KeptPairs:
   /** Makes `pairs` this step's pairs from the grid's update (its `boundsOf` done) in a world at
     * `revision`, with at most `maxPairs` of them (past it the step fails, naming `limitName`):
     * `update`, `search` into `buffer` when the grid must search in full, and the grid's search of
-    * the step's own bounds when the kept pairs would pass twice `maxPairs`; then `emit`.
+    * the step's own bounds when the kept pairs would pass twice `maxPairs`; then the search's
+    * `emit`.
     */
   def pairsOf(grid: UniformGrid, revision: Long, maxPairs: Int, limitName: String, pairs: PairBuffer,
       search: KeptPairs.Search): Unit =
@@ -235,7 +251,7 @@ private[sims] final class KeptPairs:
       catch case _: PairBuffer.TooManyPairs => false
       finally endSearch(grid)
     if !found then searchTight(grid, maxPairs, limitName)
-    emit(grid, pairs)
+    search.emit(this, grid, pairs)
 
   private def mark(i: Int, moved: Int): Int =
     marks(i) = true
@@ -318,12 +334,15 @@ private[sims] final class KeptPairs:
     size = 0
 
 private[sims] object KeptPairs:
-  /** The grid's full search for the kept pairs: its `endUpdate` and pair search, serial or shared
-    * out, into `buffer` (see `pairsOf`).
+  /** The grid's full search for the kept pairs, and their emission, on one thread or shared out
+    * (see `pairsOf`).
     */
   trait Search:
-    /** Runs the search of `grid` into `buffer`. */
+    /** Runs the search of `grid` into `buffer`: its `endUpdate` and pair search. */
     def run(grid: UniformGrid, buffer: PairBuffer): Unit
+
+    /** Makes `pairs` the step's pairs from `kept`: its `emit`, or the same in ranges shared out. */
+    def emit(kept: KeptPairs, grid: UniformGrid, pairs: PairBuffer): Unit = kept.emit(grid, pairs)
 
   /** A moving shape's bounds are held enlarged by this fraction of their smaller side: a resting
     * shape's jitter stays far within it, and a ball in a pile gains few kept partners.

@@ -72,12 +72,20 @@ private[sims] final class ContactFinder:
   private var pairRanges = new Array[PairBuffer](0)
   private var pairTests = new Array[Long](0)
 
-  // The workers of the shared search under way, and the search as the kept pairs call it.
+  // The workers of the shared search under way, and the search and emission as the kept pairs
+  // call them; the kept pairs of an emission under way.
   private var workers: Workers = null
-  private val sharedSearch: KeptPairs.Search = (grid, buffer) => searchShared(grid, buffer)
+  private val sharedSearch: KeptPairs.Search = new KeptPairs.Search:
+    def run(grid: sims.collision.broadphase.UniformGrid, buffer: PairBuffer): Unit = searchShared(grid, buffer)
+    override def emit(kept: KeptPairs, grid: sims.collision.broadphase.UniformGrid, pairs: PairBuffer): Unit =
+      emitShared(kept, grid, pairs)
+  private var kept: KeptPairs = null
 
   private val pairsTask: Workers.Task = index =>
     pairTests(index) = grid.findPairsOf(from(index), from(index + 1), pairRanges(index))
+
+  private val emitTask: Workers.Task = index =>
+    kept.emitRange(grid, from(index), from(index + 1), if index == 0 then pairs else pairRanges(index))
 
   private val boundsTask: Workers.Task = index => grid.boundsOf(from(index), from(index + 1))
 
@@ -220,26 +228,57 @@ private[sims] final class ContactFinder:
         grid.endSharedGrid()
     finally this.grid = null
     val count = ContactFinder.RangesPerWorker * workers.count
-    if pairRanges.length < count then
-      pairRanges = Array.fill(count)(PairBuffer())
-      pairTests = new Array[Long](count)
-    var r = 0
-    while r < count do
-      pairRanges(r).limit = buffer.limit
-      pairRanges(r).keeps = true
-      pairRanges(r).limitName = "SoftStep.maxPairs"
-      r += 1
+    rangeBuffers(count, buffer)
     this.grid = grid
     ranges = count
     items = grid.shapeCount
     try workers.run(count, pairsTask)
     finally this.grid = null
     var tests = 0L
-    r = 0
+    var r = 0
     while r < count do
       tests += pairTests(r)
       r += 1
     grid.endShared(buffer, pairRanges, count, tests)
+
+  /** The kept pairs' emission (see [[KeptPairs.emitRange]]) into `pairs`, in ranges shared out
+    * among `workers`: the first range's into `pairs`, each other's into a buffer of its own with
+    * the limit of `pairs`, appended in order: the same pairs, in the same order, as on one thread.
+    */
+  private def emitShared(kept: KeptPairs, grid: sims.collision.broadphase.UniformGrid, pairs: PairBuffer): Unit =
+    if kept.keptCount < SoftPasses.MinimumShared then kept.emit(grid, pairs)
+    else
+      val count = ContactFinder.RangesPerWorker * workers.count
+      rangeBuffers(count, pairs)
+      this.kept = kept
+      this.grid = grid
+      this.pairs = pairs
+      ranges = count
+      items = kept.keptCount
+      try workers.run(count, emitTask)
+      finally
+        this.grid = null
+        this.kept = null
+        this.pairs = null
+      var r = 1
+      while r < count do
+        pairs.append(pairRanges(r))
+        r += 1
+      kept.endEmit(grid)
+
+  /** Makes `count` buffers of pairs for ranges of a shared stage, with the limit, its name and the
+    * failure of `like`.
+    */
+  private def rangeBuffers(count: Int, like: PairBuffer): Unit =
+    if pairRanges.length < count then
+      pairRanges = Array.fill(count)(PairBuffer())
+      pairTests = new Array[Long](count)
+    var r = 0
+    while r < count do
+      pairRanges(r).limit = like.limit
+      pairRanges(r).keeps = like.keeps
+      pairRanges(r).limitName = like.limitName
+      r += 1
 
   /** Collides `pairs` in ranges shared out among `workers`, into `table.current` in the ranges'
     * order; false, with nothing added, when a range met a pair of a user's kinds. A failure (a
