@@ -121,20 +121,17 @@ private[sims] final class KeptPairs:
       k += 1
     size = n
     // The grid's pairs come by second shape, each shape's partners in the order of its cells
-    // (an insertion sort puts those few in order), then the large shapes' pairs (sorted, merged).
+    // (each group's firsts sorted: a falling ball's bounds, stretched by its sweep, can meet a
+    // hundred partners, too many for an insertion sort), then the large shapes' pairs (sorted,
+    // merged).
     val split = math.min(grid.largeFrom, n)
-    var i = 1
-    while i < split do
-      val f = firsts(i)
-      val s = seconds(i)
-      var j = i
-      while j > 0 && before(f, s, firsts(j - 1), seconds(j - 1)) do
-        firsts(j) = firsts(j - 1)
-        seconds(j) = seconds(j - 1)
-        j -= 1
-      firsts(j) = f
-      seconds(j) = s
-      i += 1
+    var from = 0
+    while from < split do
+      val second = seconds(from)
+      var until = from + 1
+      while until < split && seconds(until) == second do until += 1
+      if until - from > 1 then java.util.Arrays.sort(firsts, from, until)
+      from = until
     if split < n then
       sortRange(searched, split, n)
       size = split
