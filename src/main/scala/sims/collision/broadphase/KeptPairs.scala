@@ -198,7 +198,7 @@ private[sims] final class KeptPairs:
       val b = 4 * i
       inside =
         if grid.ignored(i) then fat(b) != fat(b)
-        else withinFat(boxes, b) && kinds(i) == grid.kind(i)
+        else withinFat(boxes, b) && !oversized(boxes, b) && kinds(i) == grid.kind(i)
       i += 1
     inside
 
@@ -215,7 +215,7 @@ private[sims] final class KeptPairs:
         if fat(b) == fat(b) then
           fat(b) = Double.NaN; fat(b + 1) = Double.NaN; fat(b + 2) = Double.NaN; fat(b + 3) = Double.NaN
           moved = mark(i, moved)
-      else if !withinFat(boxes, b) || kinds(i) != grid.kind(i) then
+      else if !withinFat(boxes, b) || oversized(boxes, b) || kinds(i) != grid.kind(i) then
         val margin =
           if grid.body(i).immovable then 0.0
           else KeptPairs.FatFraction * math.min(boxes(b + 2) - boxes(b), boxes(b + 3) - boxes(b + 1))
@@ -229,6 +229,14 @@ private[sims] final class KeptPairs:
   /** Whether the bounds at `b` in `boxes` lie within the enlarged ones at `b` (false for NaN). */
   private inline def withinFat(boxes: Array[Double], b: Int): Boolean =
     fat(b) <= boxes(b) && fat(b + 1) <= boxes(b + 1) && boxes(b + 2) <= fat(b + 2) && boxes(b + 3) <= fat(b + 3)
+
+  /** Whether the enlarged bounds at `b` are more than [[KeptPairs.MostFatScale]] times as wide or
+    * as tall as the bounds at `b` in `boxes`: the shape slowed down since its search, whose bounds
+    * its sweep then stretched, and its kept partners are mostly shapes it no longer meets.
+    */
+  private inline def oversized(boxes: Array[Double], b: Int): Boolean =
+    fat(b + 2) - fat(b) > KeptPairs.MostFatScale * (boxes(b + 2) - boxes(b)) ||
+      fat(b + 3) - fat(b + 1) > KeptPairs.MostFatScale * (boxes(b + 3) - boxes(b + 1))
 
   /** Makes `pairs` this step's pairs from the grid's update (its `boundsOf` done) in a world at
     * `revision`, with at most `maxPairs` of them (past it the step fails, naming `limitName`):
@@ -345,6 +353,12 @@ private[sims] object KeptPairs:
     * shape's jitter stays far within it, and a ball in a pile gains few kept partners.
     */
   val FatFraction = 0.1
+
+  /** A shape whose enlarged bounds grew more than this many times as wide or as tall as its bounds
+    * is searched again with bounds enlarged afresh (enlarged afresh, they are at most 1 + 2
+    * FatFraction times as wide and as tall).
+    */
+  val MostFatScale = 2.0
 
   /** When more than one shape in this many left its enlarged bounds, the grid searches in full. */
   val MostMovedShare = 4

@@ -155,3 +155,32 @@ class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
     world.collisionPipeline.pairs.size shouldBe 60
     world.bodies.forall(_.linearVelocity.length < 0.01) shouldBe true
   }
+
+  test("a shape that slowed down is searched again, and keeps only the partners its bounds now meet") {
+    val world = World()
+    for i <- 0 until 40 do
+      val s = Circle(0.5, 1)
+      s.pos = Vector2D(0.9 * (i % 10), 0.9 * (i / 10))
+      world += s.asBody
+    val pipeline = world.collisionPipeline
+    val kept = pipeline.kept
+    // Bounds stretched by how far each body moves in 0.1 s.
+    def swept(): Seq[(Int, Int)] =
+      pipeline.findKeptPairs(world.shapeBuffer, 2.0, 1000000, "maxPairs", 0, 0.1, world.revision)
+      val pairs = pipeline.pairs
+      (0 until pairs.size).map(k => (pairs.first(k).worldIndex, pairs.second(k).worldIndex))
+    swept() shouldBe expected(world)
+    val calm = kept.keptCount
+    // Ball 15 at 30 m/s: its bounds 3 m longer, over its whole column.
+    world.bodies(15).linearVelocity = Vector2D(0, 30)
+    swept().size should be > expected(world).size
+    kept.keptCount should be > calm
+    (kept.searches, kept.fullSearches) shouldBe (2, 1)
+    // At rest again, within its enlarged bounds but far smaller: searched again, alone.
+    world.bodies(15).linearVelocity = Vector2D(0, 0)
+    swept() shouldBe expected(world)
+    kept.keptCount shouldBe calm
+    (kept.searches, kept.fullSearches) shouldBe (3, 1)
+    swept() shouldBe expected(world)
+    kept.searches shouldBe 3
+  }
