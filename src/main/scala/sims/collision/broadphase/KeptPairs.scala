@@ -16,8 +16,10 @@ import sims.dynamics.Shape
   * in one order whatever the history: by their second shape, then by their first (by index), so
   * that a step's result depends on the world's state alone.
   *
-  * When shapes left their enlarged bounds, only their partners are searched (their pairs are
-  * dropped and found again), unless more than one in [[KeptPairs.MostMovedShare]] did: then the
+  * When shapes left their enlarged bounds, or slowed down so much that those are over
+  * [[KeptPairs.MostFatScale]] times as wide or as tall as their bounds, only their partners are
+  * searched (their pairs are dropped and found again, with bounds enlarged afresh), unless more
+  * than one in [[KeptPairs.MostMovedShare]] did: then the
   * grid searches for all pairs, shared out among the workers when there are several. A search
   * that finds more than its limit of kept pairs gives way to the grid's search of the step's own
   * bounds, which alone decides whether the step has too many pairs.
