@@ -39,6 +39,15 @@ class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
     */
   private val move: Gen[Int] = Gen.frequency(5 -> 0, 3 -> 1, 2 -> 2, 1 -> 3)
 
+  /** 40 balls of radius 0.5 in 4 rows of 10, 0.9 m apart: each overlaps its neighbours. */
+  private def ballRows(): World =
+    val world = World()
+    for i <- 0 until 40 do
+      val s = Circle(0.5, 1)
+      s.pos = Vector2D(0.9 * (i % 10), 0.9 * (i / 10))
+      world += s.asBody
+    world
+
   test("after any moves and filter changes, the kept pairs are the pairs a brute force finds, in its order") {
     forAll(Gen.listOfN(60, shape), Gen.oneOf(0.5, 2.0, 7.0), Gen.listOfN(8 * 64, move), minSuccessful(30)) {
       (shapes, side, moves) =>
@@ -86,11 +95,7 @@ class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
   }
 
   test("only a search finds pairs, and only the moved shapes' partners are searched when few moved") {
-    val world = World()
-    for i <- 0 until 40 do
-      val s = Circle(0.5, 1)
-      s.pos = Vector2D(0.9 * (i % 10), 0.9 * (i / 10))
-      world += s.asBody
+    val world = ballRows()
     val kept = world.collisionPipeline.kept
     keptPairs(world) shouldBe expected(world)
     (kept.searches, kept.fullSearches) shouldBe (1, 1)
@@ -157,11 +162,7 @@ class KeptPairsSpec extends AnyFunSuite with Matchers with ScalaCheckPropertyChe
   }
 
   test("a shape that slowed down is searched again, and keeps only the partners its bounds now meet") {
-    val world = World()
-    for i <- 0 until 40 do
-      val s = Circle(0.5, 1)
-      s.pos = Vector2D(0.9 * (i % 10), 0.9 * (i / 10))
-      world += s.asBody
+    val world = ballRows()
     val pipeline = world.collisionPipeline
     val kept = pipeline.kept
     // Bounds stretched by how far each body moves in 0.1 s.
