@@ -59,10 +59,7 @@ private[sims] final class ContactFinder:
   private val collideTask: Workers.Task = index =>
     val ranged = colliders(index)
     try
-      var i = from(index)
-      while i < from(index + 1) && !ranged.metGeneral do
-        ranged.collide(pairs.first(i), pairs.second(i))
-        i += 1
+      ranged.collideRange(pairs, from(index), from(index + 1))
     catch case e: Throwable => failures(index) = e
 
   private val placeTask: Workers.Task = index => current.place(stages(index), base(index))
@@ -120,10 +117,7 @@ private[sims] final class ContactFinder:
         if !bodies.anyAsleep then
           val shared = workers.count > 1 && pairs.size >= SoftPasses.MinimumShared &&
             collideShared(workers, table, pairs, speculativeDistance, linearSlop, persistence)
-          var i = 0
-          while !shared && i < pairs.size do
-            collider.collide(pairs.first(i), pairs.second(i))
-            i += 1
+          if !shared then collider.collideRange(pairs, 0, pairs.size)
         else
           // Sleeping islands touched by an awake body (or by a fixed body the user moved) wake
           // first, and the islands they touch in turn; then the pairs with a moving body are

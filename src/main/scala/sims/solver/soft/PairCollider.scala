@@ -1,6 +1,6 @@
 package sims.solver.soft
 
-import sims.collision.{Collision, PairKey}
+import sims.collision.{Collision, PairBuffer, PairKey}
 import sims.collision.manifold.{CircleManifold, Manifold}
 import sims.collision.narrowphase.{Narrowphase, PairFunctions, PairKind, RecentMethods}
 import sims.dynamics.{Circle, Shape, World}
@@ -34,6 +34,8 @@ private[sims] final class PairCollider:
   // The narrowphase's methods for the last few pairs of shape classes, so that a shared range
   // takes the narrowphase's lock only for a class pair new to it in the step.
   private val recent = RecentMethods(PairCollider.RecentSize)
+  // What `touch` read, summed (never used).
+  private var touched = 0L
 
   /** Starts a step: contacts of `world`'s pairs into `target`, warm started from `table`'s
     * committed ones; `shared` when other colliders run at the same time.
@@ -70,6 +72,40 @@ private[sims] final class PairCollider:
         val resolved = narrowphase.synchronized(narrowphase.resolve(a, b))
         recent.remember(a.shapeClass, b.shapeClass, resolved)
         resolved
+
+  /** Collides pairs `from until until` of `pairs` in order (see `collide`); a shared collider stops
+    * at a pair of a user's kinds.
+    */
+  def collideRange(pairs: PairBuffer, from: Int, until: Int): Unit =
+    var start = from
+    while start < until && !metGeneral do
+      val end = math.min(start + PairCollider.Batch, until)
+      touch(pairs, start, end)
+      var i = start
+      while i < end && !metGeneral do
+        collide(pairs.first(i), pairs.second(i))
+        i += 1
+      start = end
+
+  // Reads, for pairs `start until end`, the shapes, bodies and body states `collide` reads first:
+  // each a chain of loads (shape, its body, the body's state) that misses the cache in a large
+  // world, where one pair's `collide` is too long for the processor to start the next pair's
+  // loads meanwhile. In this short loop it has many pairs' misses under way at once, and the
+  // batch's `collide`s find the lines in the cache (ballpit-16000: the collision stage took
+  // 5.8 times ballpit-4000's for 4 times the pairs). The sum only keeps the loads from being
+  // dropped as unused.
+  private def touch(pairs: PairBuffer, start: Int, end: Int): Unit =
+    val state = bodies.state
+    var sum = 0L
+    var i = start
+    while i < end do
+      val a = pairs.first(i).body
+      val b = pairs.second(i).body
+      sum += java.lang.Double.doubleToRawLongBits(state(a.index * Stride + VelocityX)) +
+        java.lang.Double.doubleToRawLongBits(state(b.index * Stride + VelocityX)) +
+        (if a.allCentred && b.allCentred then 1 else 0)
+      i += 1
+    touched = sum
 
   /** Collides the pair (a, b): its manifold (or the last step's, kept), as a contact of this step. */
   def collide(a: Shape, b: Shape): Unit =
@@ -485,6 +521,9 @@ private[sims] object PairCollider:
     else
       (if (sides & 1) != 0 && a.body.allCentred then TurnlessA else 0) |
         (if (sides & 2) != 0 && b.body.allCentred then TurnlessB else 0)
+
+  /** Pairs whose shapes and bodies `collideRange` reads ahead at once. */
+  inline val Batch = 64
 
   /** Class pairs a shared collider remembers. */
   inline val RecentSize = 4
