@@ -156,6 +156,26 @@ class SoftStepWorkersSpec extends AnyFunSuite with Matchers:
     failure(2) shouldBe failure(1)
   }
 
+  test("the pairs' shapes and bodies read ahead or not: the same contacts and bits, on one worker and on two") {
+    // 2,500 balls in a square, each overlapping its 4 neighbours and in reach of its diagonal ones.
+    def stepped(workers: Int, readAheadPairs: Int): World =
+      val w = World()
+      w.enableSleep = false
+      w.gravity = Vector2D(0, -1)
+      w.solver = SoftStep(workers = workers)
+      for i <- 0 until 2500 do
+        val ball = Circle(0.5, 1)
+        ball.pos = Vector2D(0.99 * (i % 50), 0.99 * (i / 50))
+        w += ball.asBody
+      w.workspace(classOf[soft.SoftWorkspace], soft.SoftWorkspace()).finder.readAheadPairs = readAheadPairs
+      for _ <- 1 to 5 do w.step()
+      w
+    val plain = stepped(1, Int.MaxValue)
+    val pairs = plain.collisionPipeline.pairs.size
+    pairs should be > 2 * 2048 // shared out under two workers
+    for workers <- 1 to 2 do StateFingerprint(stepped(workers, 0)) shouldBe StateFingerprint(plain)
+  }
+
   test("workers must be at least 1, named in the error") {
     val error = intercept[IllegalArgumentException](SoftStep(workers = 0))
     error.getMessage should include("workers")

@@ -37,6 +37,10 @@ import sims.solver.Workers
   * code need not be safe to run on several at once).
   */
 private[sims] final class ContactFinder:
+  /** The fewest pairs in a step for which the pairs' shapes and bodies are read ahead in batches
+    * (see [[PairCollider.ReadAheadPairs]]; the same contacts either way).
+    */
+  private[sims] var readAheadPairs: Int = PairCollider.ReadAheadPairs
   // This thread's collider, and one per range of a shared stage with the ranges' contacts.
   private val collider = PairCollider()
   private var colliders = new Array[PairCollider](0)
@@ -59,7 +63,7 @@ private[sims] final class ContactFinder:
   private val collideTask: Workers.Task = index =>
     val ranged = colliders(index)
     try
-      ranged.collideRange(pairs, from(index), from(index + 1))
+      ranged.collideRange(pairs, from(index), from(index + 1), pairs.size >= readAheadPairs)
     catch case e: Throwable => failures(index) = e
 
   private val placeTask: Workers.Task = index => current.place(stages(index), base(index))
@@ -117,7 +121,7 @@ private[sims] final class ContactFinder:
         if !bodies.anyAsleep then
           val shared = workers.count > 1 && pairs.size >= SoftPasses.MinimumShared &&
             collideShared(workers, table, pairs, speculativeDistance, linearSlop, persistence)
-          if !shared then collider.collideRange(pairs, 0, pairs.size)
+          if !shared then collider.collideRange(pairs, 0, pairs.size, pairs.size >= readAheadPairs)
         else
           // Sleeping islands touched by an awake body (or by a fixed body the user moved) wake
           // first, and the islands they touch in turn; then the pairs with a moving body are
