@@ -527,7 +527,7 @@ private[sims] object PairCollider:
   inline val Batch = 64
 
   /** The fewest pairs in a step for which the collision stage reads ahead: fewer sit in the caches,
-    * where the loop only costs (measured: ballpit-16000's 52,000 pairs 7% faster with it; ballpit-500's
+    * where the loop only costs (measured: ballpit-16000's 52,000 pairs 2 to 8% faster with it; ballpit-500's
     * 1,500 2.5 to 4% slower, ballpit-4000's 12,000 and large_pyramid's 15,000 1 to 3% slower).
     */
   inline val ReadAheadPairs = 16384
