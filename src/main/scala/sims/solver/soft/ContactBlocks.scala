@@ -23,8 +23,14 @@ package sims.solver.soft
 private[sims] final class ContactBlocks:
   import ContactBlocks.*
 
-  /** The passes' order: block k's contacts are `order(start(k) until start(k + 1))`. */
-  var order: Array[Int] = new Array[Int](0)
+  /** The passes' order, place by place: place n's contact, its bodies' offsets in the state
+    * and its hot block's offset at `PlaceStride * n` (block k's places are `start(k) until
+    * start(k + 1)`), read in order by the passes where the contact's own arrays would be gathered
+    * through its index in every pass.
+    */
+  var places: Array[Int] = new Array[Int](0)
+  /** Per place n, its bodies' inverse masses and inertias (mA, iA, mB, iB) at 4 n. */
+  var placeMasses: Array[Double] = new Array[Double](0)
   /** Where each block starts in `order` (blocks by level: the 2^Depth leaves, then level 1's...). */
   val start: Array[Int] = new Array[Int](BlockCount + 1)
   /** Number of levels this step: 1 (one block) or Depth + 1. */
@@ -48,6 +54,7 @@ private[sims] final class ContactBlocks:
   // workers; per range and block, the range's contacts in the block, then where the next goes
   // (a row of `RowStride` per range: ranges on different cores write different cache lines).
   private var splitting: Contacts = null
+  private var splittingBodies: SoftBodies = null
   private var ranges = 1
   private var items = 0
   private var filled = new Array[Int](RowStride)
@@ -62,19 +69,24 @@ private[sims] final class ContactBlocks:
     */
   def split(contacts: Contacts, bodies: SoftBodies, gx: Double, gy: Double, workers: sims.solver.Workers): Unit =
     val active = contacts.active
-    if order.length < active then
-      order = new Array[Int](2 * active)
+    if blockOf.length < active then
+      places = new Array[Int](2 * PlaceStride * active)
+      placeMasses = new Array[Double](8 * active)
       blockOf = new Array[Int](2 * active)
       sorted = new Array[Int](2 * active)
+    splitting = contacts
+    splittingBodies = bodies
     if active < MinimumSplit then
       levels = 1
       start(0) = 0
       start(1) = active
-      interleave(0, active, identity = true)
+      try interleave(0, active, identity = true)
+      finally
+        splitting = null
+        splittingBodies = null
     else
       levels = Depth + 1
       cutSlabs(bodies, gx, gy)
-      splitting = contacts
       items = active
       ranges = if workers.count == 1 then 1 else SoftPasses.RangesPerWorker * workers.count
       if filled.length < ranges * RowStride then filled = new Array[Int](ranges * RowStride)
@@ -96,7 +108,9 @@ private[sims] final class ContactBlocks:
         start(BlockCount) = placed
         workers.run(ranges, sortTask)
         workers.run(BlockCount, interleaveTask)
-      finally splitting = null
+      finally
+        splitting = null
+        splittingBodies = null
 
   // Where range r of the split under way starts.
   private def from(r: Int): Int = sims.solver.Workers.rangeStart(items, ranges, r)
@@ -133,15 +147,26 @@ private[sims] final class ContactBlocks:
       filled(k) += 1
       c += 1
 
-  /** Writes `order(from until until)`: the block's contacts (`sorted(from until until)`, or
+  /** Writes places `from until until`: the block's contacts (`sorted(from until until)`, or
     * `from until until` themselves when `identity`), their two halves taken in turn.
     */
   private def interleave(from: Int, until: Int, identity: Boolean): Unit =
+    val contacts = splitting
+    val bodies = splittingBodies
     val half = (until - from + 1) / 2
     var n = 0
     while n < until - from do
       val i = from + (if (n & 1) == 0 then n >> 1 else half + (n >> 1))
-      order(from + n) = if identity then i else sorted(i)
+      val c = if identity then i else sorted(i)
+      val a = contacts.bodyA(c); val b = contacts.bodyB(c)
+      val place = PlaceStride * (from + n)
+      places(place) = c
+      places(place + 1) = a * SoftBodies.Stride
+      places(place + 2) = b * SoftBodies.Stride
+      places(place + 3) = contacts.offset(c)
+      val m = 4 * (from + n)
+      placeMasses(m) = bodies.invMass(a); placeMasses(m + 1) = bodies.invI(a)
+      placeMasses(m + 2) = bodies.invMass(b); placeMasses(m + 3) = bodies.invI(b)
       n += 1
 
   /** Gives every moving body its slab: `Bins` bins along the slabs' axis over the moving bodies'
@@ -230,5 +255,7 @@ private[sims] object ContactBlocks:
   inline val Bins = 1024
   /** Ints per range's row of counts: the blocks, padded to two cache lines. */
   inline val RowStride = 32
+  /** Ints per place (see `places`). */
+  inline val PlaceStride = 4
   /** Fewer contacts than this are one block: splitting costs more than sharing saves. */
   inline val MinimumSplit = 4096

@@ -36,16 +36,15 @@ private[sims] object ContactConstraints:
   inline val DeepMassScale = 0.5
 
   /** Computes, for contacts `from` until `until`, what stays fixed during the step: their
-    * bodies' inverse masses (in `contacts.masses`), effective masses, the normal relative
-    * velocity before the step, and the softness (stiffer against fixed bodies, and stiffened
-    * under a heavy load, see [[ContactStiffness]]). The arms and separations are the collision
-    * stage's.
+    * effective masses, the normal relative velocity before the step, and the softness (stiffer
+    * against fixed bodies, and stiffened under a heavy load, see [[ContactStiffness]]). The arms
+    * and separations are the collision stage's; the bodies' inverse masses, the passes read from
+    * [[ContactBlocks]]' places.
     */
   def prepare(contacts: Contacts, bodies: SoftBodies, stiffness: ContactStiffness, from: Int, until: Int): Unit =
     val hot = contacts.hot
     val cold = contacts.cold
     val state = bodies.state
-    val masses = contacts.masses
     val records = contacts.records
     var c = from
     while c < until do
@@ -53,7 +52,6 @@ private[sims] object ContactConstraints:
       val b = contacts.bodyB(c)
       val mA = bodies.invMass(a); val iA = bodies.invI(a)
       val mB = bodies.invMass(b); val iB = bodies.invI(b)
-      masses(4 * c) = mA; masses(4 * c + 1) = iA; masses(4 * c + 2) = mB; masses(4 * c + 3) = iB
 
       val k = contacts.offset(c)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
@@ -91,24 +89,26 @@ private[sims] object ContactConstraints:
       c += 1
 
   /** Applies the accumulated impulses (from the last step, then from the substeps) of the
-    * contacts `order(from until until)`.
+    * contacts at places `from until until` (see [[ContactBlocks]]).
     */
-  def warmStart(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int): Unit =
+  def warmStart(contacts: Contacts, bodies: SoftBodies, blocks: ContactBlocks, from: Int, until: Int): Unit =
     val hot = contacts.hot
-    val masses = contacts.masses
+    val places = blocks.places
+    val masses = blocks.placeMasses
     val state = bodies.state
     var n = from
     while n < until do
-      val c = order(n)
-      if contacts.turnless(c) == Turnless then n = warmStartTurnless(contacts, state, order, n, until)
+      val place = ContactBlocks.PlaceStride * n
+      val c = places(place)
+      if contacts.turnless(c) == Turnless then n = warmStartTurnless(contacts, state, blocks, n, until)
       else
-        val sA = contacts.bodyA(c) * SoftBodies.Stride
-        val sB = contacts.bodyB(c) * SoftBodies.Stride
-        val mA = masses(4 * c); val iA = masses(4 * c + 1)
-        val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
+        val sA = places(place + 1)
+        val sB = places(place + 2)
+        val mA = masses(4 * n); val iA = masses(4 * n + 1)
+        val mB = masses(4 * n + 2); val iB = masses(4 * n + 3)
         var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
         var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
-        val k = contacts.offset(c)
+        val k = places(place + 3)
         val nx = hot(k + NormalX); val ny = hot(k + NormalY)
         val two = contacts.pointCount(c) == 2
         var q = k + Header
@@ -127,24 +127,25 @@ private[sims] object ContactConstraints:
         state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
         n += 1
 
-  /** `warmStart` for the run of contacts from `order(from)` on, while each is turnless on both
+  /** `warmStart` for the run of contacts from place `from` on, while each is turnless on both
     * sides (see `solveTurnless`), up to `until`; returns where the run ends. Its one point's
     * normal impulse acts along both arms and turns neither body (as in the passes, which give
     * it no turn); the tangent impulse turns them by the arms' moments about the tangent.
     */
-  private def warmStartTurnless(contacts: Contacts, state: Array[Double], order: Array[Int], from: Int,
+  private def warmStartTurnless(contacts: Contacts, state: Array[Double], blocks: ContactBlocks, from: Int,
       until: Int): Int =
     val hot = contacts.hot
-    val masses = contacts.masses
+    val places = blocks.places
+    val masses = blocks.placeMasses
     val turnless = contacts.turnless
     var n = from
-    while n < until && turnless(order(n)) == Turnless do
-      val c = order(n)
-      val sA = contacts.bodyA(c) * SoftBodies.Stride
-      val sB = contacts.bodyB(c) * SoftBodies.Stride
-      val mA = masses(4 * c); val iA = masses(4 * c + 1)
-      val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
-      val k = contacts.offset(c)
+    while n < until && turnless(places(ContactBlocks.PlaceStride * n)) == Turnless do
+      val place = ContactBlocks.PlaceStride * n
+      val sA = places(place + 1)
+      val sB = places(place + 2)
+      val mA = masses(4 * n); val iA = masses(4 * n + 1)
+      val mB = masses(4 * n + 2); val iB = masses(4 * n + 3)
+      val k = places(place + 3)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val q = k + Header
       val normal = hot(q + NormalImpulse)
@@ -162,7 +163,7 @@ private[sims] object ContactConstraints:
       n += 1
     n
 
-  /** One pass over the contacts `order(from until until)` (see [[ContactBlocks]]): normal
+  /** One pass over the contacts at places `from until until` (see [[ContactBlocks]]) (see [[ContactBlocks]]): normal
     * impulses (with the soft bias when `useBias`, the solve pass; without, the relax pass), then,
     * in the relax pass, friction.
     *
@@ -176,23 +177,25 @@ private[sims] object ContactConstraints:
     * before, with a chain half as long. A contact turnless on both sides takes a shorter way
     * (`solveTurnless`).
     */
-  def solve(contacts: Contacts, bodies: SoftBodies, order: Array[Int], from: Int, until: Int, inverseH: Double,
+  def solve(contacts: Contacts, bodies: SoftBodies, blocks: ContactBlocks, from: Int, until: Int, inverseH: Double,
       contactSpeed: Double, useBias: Boolean): Unit =
     val hot = contacts.hot
-    val masses = contacts.masses
+    val places = blocks.places
+    val masses = blocks.placeMasses
     val state = bodies.state
     val bouncing = contacts.bouncing
     val records = contacts.records
     var n = from
     while n < until do
-      val c = order(n)
+      val place = ContactBlocks.PlaceStride * n
+      val c = places(place)
       val turnless = contacts.turnless(c)
-      if turnless == Turnless then n = solveTurnless(contacts, state, order, n, until, inverseH, contactSpeed, useBias)
+      if turnless == Turnless then n = solveTurnless(contacts, state, blocks, n, until, inverseH, contactSpeed, useBias)
       else
-        val sA = contacts.bodyA(c) * SoftBodies.Stride
-        val sB = contacts.bodyB(c) * SoftBodies.Stride
-        val mA = masses(4 * c); val iA = masses(4 * c + 1)
-        val mB = masses(4 * c + 2); val iB = masses(4 * c + 3)
+        val sA = places(place + 1)
+        val sB = places(place + 2)
+        val mA = masses(4 * n); val iA = masses(4 * n + 1)
+        val mB = masses(4 * n + 2); val iB = masses(4 * n + 3)
         var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY); var wA = state(sA + AngularVelocity)
         var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY); var wB = state(sB + AngularVelocity)
         // B's displacement relative to A's since the step began, and their turns: the points'
@@ -204,7 +207,7 @@ private[sims] object ContactConstraints:
         if turnless != 0 then // a circle on a moving body: its turn moves no outline along the normal
           if (turnless & TurnlessA) != 0 then { cosA = 1.0; sinA = 0.0 }
           if (turnless & TurnlessB) != 0 then { cosB = 1.0; sinB = 0.0 }
-        val k = contacts.offset(c)
+        val k = places(place + 3)
         val nx = hot(k + NormalX); val ny = hot(k + NormalY)
         val mAnx = mA * nx; val mAny = mA * ny; val mBnx = mB * nx; val mBny = mB * ny
         val q0 = k + Header
@@ -260,7 +263,7 @@ private[sims] object ContactConstraints:
         state(sB + VelocityX) = vBx; state(sB + VelocityY) = vBy; state(sB + AngularVelocity) = wB
         n += 1
 
-  /** `solve` for the run of contacts from `order(from)` on, while each is turnless on both
+  /** `solve` for the run of contacts from place `from` on, while each is turnless on both
     * sides (two circles on their bodies' centres, or such a circle and a fixed body; every
     * contact of a ball pit), up to `until`; returns where the run ends. Such a contact has one
     * point, its normal row neither reads nor changes the bodies' spin, and its separation is
@@ -270,22 +273,24 @@ private[sims] object ContactConstraints:
     * inlined calls as the compiler allows, and HotSpot would not inline one contact's code,
     * too long, into it either.
     */
-  private def solveTurnless(contacts: Contacts, state: Array[Double], order: Array[Int], from: Int, until: Int,
+  private def solveTurnless(contacts: Contacts, state: Array[Double], blocks: ContactBlocks, from: Int, until: Int,
       inverseH: Double, contactSpeed: Double, useBias: Boolean): Int =
     val hot = contacts.hot
-    val masses = contacts.masses
+    val places = blocks.places
+    val masses = blocks.placeMasses
     val turnless = contacts.turnless
     val bouncing = contacts.bouncing
     val records = contacts.records
     var n = from
-    while n < until && turnless(order(n)) == Turnless do
-      val c = order(n)
-      val sA = contacts.bodyA(c) * SoftBodies.Stride
-      val sB = contacts.bodyB(c) * SoftBodies.Stride
-      val mA = masses(4 * c); val mB = masses(4 * c + 2)
+    while n < until && turnless(places(ContactBlocks.PlaceStride * n)) == Turnless do
+      val place = ContactBlocks.PlaceStride * n
+      val c = places(place)
+      val sA = places(place + 1)
+      val sB = places(place + 2)
+      val mA = masses(4 * n); val mB = masses(4 * n + 2)
       var vAx = state(sA + VelocityX); var vAy = state(sA + VelocityY)
       var vBx = state(sB + VelocityX); var vBy = state(sB + VelocityY)
-      val k = contacts.offset(c)
+      val k = places(place + 3)
       val nx = hot(k + NormalX); val ny = hot(k + NormalY)
       val q = k + Header
       val s = (state(sB + ShiftX) - state(sA + ShiftX)) * nx + (state(sB + ShiftY) - state(sA + ShiftY)) * ny +
@@ -297,7 +302,7 @@ private[sims] object ContactConstraints:
       vBx += impulse * mB * nx; vBy += impulse * mB * ny
       if !useBias then
         // Friction, as for any one-point contact.
-        val iA = masses(4 * c + 1); val iB = masses(4 * c + 3)
+        val iA = masses(4 * n + 1); val iB = masses(4 * n + 3)
         var wA = state(sA + AngularVelocity); var wB = state(sB + AngularVelocity)
         val tx = -ny; val ty = nx
         val rtA = hot(q + AnchorAX) * ty - hot(q + AnchorAY) * tx

@@ -362,16 +362,6 @@ private[sims] final class Contacts:
   private var hotLimit, coldLimit = Int.MaxValue
   /** Per contact c, its record at `c * RecordStride` (see [[ContactTable]]'s offsets). */
   var records: Array[Double] = new Array[Double](16 * RecordStride)
-  /** Per contact c, its bodies' inverse masses and inertias for the passes, (mA, iA, mB, iB) at
-    * 4 c: read in contact order, not gathered from the bodies' arrays in every pass. Set by the
-    * solver's preparation (not copied with a contact, not saved).
-    */
-  var masses: Array[Double] = new Array[Double](0)
-
-  /** Makes `masses` hold the first `active` contacts. */
-  def ensureMasses(): Unit =
-    if masses.length < 4 * active then masses = new Array[Double](8 * active)
-
   /** Appends an empty contact of `points` points and returns its index. */
   def add(points: Int): Int =
     if count == keys.length then grow(2 * count)

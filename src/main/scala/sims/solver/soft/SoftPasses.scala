@@ -27,12 +27,12 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
 
   private val warmStartTask: Workers.Task = index =>
     val block = blocks.levelStart(level) + index
-    ContactConstraints.warmStart(workspace.table.current, workspace.bodies, blocks.order, blocks.start(block),
+    ContactConstraints.warmStart(workspace.table.current, workspace.bodies, blocks, blocks.start(block),
       blocks.start(block + 1))
 
   private val solveTask: Workers.Task = index =>
     val block = blocks.levelStart(level) + index
-    ContactConstraints.solve(workspace.table.current, workspace.bodies, blocks.order, blocks.start(block),
+    ContactConstraints.solve(workspace.table.current, workspace.bodies, blocks, blocks.start(block),
       blocks.start(block + 1), inverseH, contactSpeed, useBias)
 
   private val velocitiesTask: Workers.Task = index =>
@@ -85,7 +85,6 @@ private[sims] final class SoftPasses(workspace: SoftWorkspace):
     */
   def prepare(workers: Workers, gx: Double, gy: Double): Unit =
     val contacts = workspace.table.current
-    contacts.ensureMasses()
     inRanges(workers, contacts.active, prepareTask)
     blocks.split(contacts, workspace.bodies, gx, gy, workers)
 
