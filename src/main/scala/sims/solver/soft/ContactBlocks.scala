@@ -31,7 +31,7 @@ private[sims] final class ContactBlocks:
   var places: Array[Int] = new Array[Int](0)
   /** Per place n, its bodies' inverse masses and inertias (mA, iA, mB, iB) at 4 n. */
   var placeMasses: Array[Double] = new Array[Double](0)
-  /** Where each block starts in `order` (blocks by level: the 2^Depth leaves, then level 1's...). */
+  /** Where each block starts among the places (blocks by level: the 2^Depth leaves, then level 1's...). */
   val start: Array[Int] = new Array[Int](BlockCount + 1)
   /** Number of levels this step: 1 (one block) or Depth + 1. */
   var levels: Int = 1
