@@ -163,7 +163,7 @@ private[sims] object ContactConstraints:
       n += 1
     n
 
-  /** One pass over the contacts at places `from until until` (see [[ContactBlocks]]) (see [[ContactBlocks]]): normal
+  /** One pass over the contacts at places `from until until` (see [[ContactBlocks]]): normal
     * impulses (with the soft bias when `useBias`, the solve pass; without, the relax pass), then,
     * in the relax pass, friction.
     *
